@@ -1,0 +1,52 @@
+#include "apps/run_command.hpp"
+
+#include <cstdio>
+
+#include "lib/progress.hpp"
+#include "lib/scenario/scenario_error.hpp"
+#include "lib/simulation.hpp"
+#include "topology/indexed_mesh.hpp"
+#include "topology/pin_selection.hpp"
+
+namespace tissu {
+
+void add_run_options(CLI::App& app, RunCommand& command) {
+  app.add_option("-o,--out", command.output_dir, "output folder (default: out/<scenario name>)");
+  app.add_option("-f,--frames", command.frames, "number of frames, instead of the scenario's")
+      ->check(CLI::PositiveNumber);
+  app.add_option("-s,--set", command.overrides,
+                 "override a scenario value, e.g. --set cloth.density=0.3 (repeatable)");
+  app.add_flag("-q,--quiet", command.quiet, "no progress output");
+}
+
+int execute(const RunCommand& command) {
+  try {
+    const Scenario scenario = load_scenario(command.scenario, command.overrides);
+    RunOptions options;
+    options.output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
+                                                    : std::filesystem::path(command.output_dir);
+    options.frames = command.frames;
+    if (!command.quiet) options.on_frame = stderr_progress();
+    const RunResult result = run_scenario(scenario, options);
+    if (!result.ok) {
+      std::fprintf(stderr, "tissu: simulation failed at %s\n", result.failure.c_str());
+      return 2;
+    }
+    if (!command.quiet) {
+      std::fprintf(stderr, "tissu: %d frames written to %s\n", result.frames_done,
+                   options.output_dir.c_str());
+    }
+    return 0;
+  } catch (const ScenarioError& e) {
+    std::fprintf(stderr, "tissu: %s\n", e.what());
+  } catch (const MeshError& e) {
+    std::fprintf(stderr, "tissu: %s\n", e.what());
+  } catch (const PinError& e) {
+    std::fprintf(stderr, "tissu: %s\n", e.what());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tissu: error: %s\n", e.what());
+  }
+  return 1;
+}
+
+}  // namespace tissu

@@ -1,0 +1,26 @@
+#pragma once
+// Options shared by the tissu CLI's run command and the demo programs.
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tissu {
+
+struct RunCommand {
+  std::string scenario;
+  std::string output_dir;
+  std::optional<int> frames;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+/// --out, --frames, --set, --quiet.
+void add_run_options(CLI::App& app, RunCommand& command);
+
+/// Loads and runs the scenario; prints errors as one line on stderr. Returns the exit status:
+/// 0 on success, 1 for bad input, 2 when the simulation failed.
+int execute(const RunCommand& command);
+
+}  // namespace tissu

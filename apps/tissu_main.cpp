@@ -1,0 +1,20 @@
+// tissu: command-line front end. Argument parsing only; the work is in lib/.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "apps/run_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tissu: adaptive mass-spring cloth simulator"};
+  app.require_subcommand(1);
+
+  tissu::RunCommand run;
+  CLI::App* run_app = app.add_subcommand("run", "simulate a scenario file");
+  run_app->add_option("scenario", run.scenario, "scenario JSON file (schema: docs/scenario.md)")
+      ->required();
+  tissu::add_run_options(*run_app, run);
+
+  CLI11_PARSE(app, argc, argv);
+  return tissu::execute(run);
+}

@@ -1,0 +1,21 @@
+#include "lib/cloth_setup.hpp"
+
+#include "lib/mesh_io/read_mesh.hpp"
+#include "topology/apply_pins.hpp"
+#include "topology/build_cloth_complex.hpp"
+#include "topology/grid_mesh.hpp"
+
+namespace tissu {
+
+void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
+  const IndexedMesh mesh = scenario.cloth.grid ? make_grid_mesh(*scenario.cloth.grid)
+                                               : read_mesh(scenario.cloth.mesh_file);
+  build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
+  try {
+    apply_pins(lcc, scenario.pins, scenario.cloth.frame);
+  } catch (const PinError& e) {
+    throw PinError(scenario.file.string() + ": " + e.what());
+  }
+}
+
+}  // namespace tissu

@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// One row of stats.csv.
+
+#include <filesystem>
+#include <fstream>
+
+namespace tissu {
+
+struct FrameStats {
+  int frame = 0;
+  int frame_count = 0;  ///< frames of the run, for progress
+  double time = 0.0;    ///< simulated time (s)
+  int particles = 0;
+  int springs = 0;
+  int faces = 0;
+  int pinned = 0;
+  double total_mass = 0.0;        ///< (kg)
+  double kinetic_energy = 0.0;    ///< (J)
+  double potential_energy = 0.0;  ///< elastic + gravitational (J)
+  double step_ms = 0.0;           ///< wall time of the frame's solver steps (ms)
+  int unconverged_steps = 0;      ///< implicit steps whose linear solve missed its tolerance
+};
+
+/// Writes stats.csv: a header line, then one line per frame, flushed as it goes.
+class StatsCsv {
+ public:
+  explicit StatsCsv(const std::filesystem::path& file);
+  void write(const FrameStats& row);
+
+ private:
+  std::ofstream m_out;
+};
+
+}  // namespace tissu

@@ -1,0 +1,138 @@
+#include <fstream>
+#include <sstream>
+
+#include "lib/scenario/read_cloth.hpp"
+
+namespace tissu {
+namespace {
+
+/// Applies "a.b.c=value" to `root`; value is JSON if it parses, else a string.
+void apply_override(nlohmann::json& root, const std::string& assignment, const std::string& file) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw ScenarioError(file + ": --set " + assignment + ": expected key.path=value");
+  }
+  const std::string path = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+  if (value.is_discarded()) value = text;
+
+  nlohmann::json* node = &root;
+  std::string walked;
+  std::istringstream keys(path);
+  for (std::string key; std::getline(keys, key, '.');) {
+    if (key.empty()) throw ScenarioError(file + ": --set " + assignment + ": empty key in path");
+    if (node->is_array()) {
+      const bool numeric = key.find_first_not_of("0123456789") == std::string::npos;
+      if (!numeric || std::stoul(key) >= node->size()) {
+        throw ScenarioError(file + ": --set " + assignment + ": '" + walked +
+                            "' is an array; expected an index below " +
+                            std::to_string(node->size()));
+      }
+      node = &(*node)[std::stoul(key)];
+    } else if (node->is_object() || node->is_null()) {
+      node = &(*node)[key];
+    } else {
+      throw ScenarioError(file + ": --set " + assignment + ": '" + walked + "' is not an object");
+    }
+    walked += (walked.empty() ? "" : ".") + key;
+  }
+  *node = std::move(value);
+}
+
+Integrator read_integrator(JsonObjectReader& simulation) {
+  const std::string name = simulation.choice_or(
+      "integrator", "implicit_euler", {"symplectic_euler", "position_verlet", "implicit_euler"});
+  return name == "symplectic_euler"  ? Integrator::symplectic_euler
+         : name == "position_verlet" ? Integrator::position_verlet
+                                     : Integrator::implicit_euler;
+}
+
+void read_simulation(JsonObjectReader simulation, Scenario& s) {
+  s.solver.integrator = read_integrator(simulation);
+  s.frames = simulation.integer("frames", 1, 10'000'000);
+  s.frame_rate = simulation.number_or("frame_rate", 30.0, positive(" (frames per second)"));
+  if (simulation.has("substeps") && simulation.has("time_step")) {
+    simulation.fail("time_step", "either \"substeps\" or \"time_step\", not both");
+  }
+  if (simulation.has("time_step")) {
+    const double h = simulation.number("time_step", positive(" (s)"));
+    const double steps = 1.0 / (s.frame_rate * h);
+    if (std::abs(steps - std::round(steps)) > 1e-6 * steps || std::round(steps) < 1) {
+      simulation.fail("time_step", "a time step that divides the frame duration 1/frame_rate");
+    }
+    s.substeps = static_cast<int>(std::round(steps));
+  } else {
+    s.substeps = simulation.integer_or("substeps", 10, 1, 1'000'000);
+  }
+  s.solver.time_step = 1.0 / (s.frame_rate * s.substeps);
+  s.solver.implicit.cg_tolerance =
+      simulation.number_or("cg_tolerance", s.solver.implicit.cg_tolerance, between(1e-16, 1, ""));
+  s.solver.implicit.cg_max_iterations =
+      simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
+  s.threads = simulation.integer_or("threads", 0, 0, 1024);
+  simulation.finish();
+}
+
+void read_environment(JsonObjectReader environment, Environment& e) {
+  e.gravity = environment.vector3_or("gravity", e.gravity);
+  e.air_damping = environment.number_or("air_damping", e.air_damping, non_negative(" (1/s)"));
+  if (environment.has("wind")) {
+    JsonObjectReader wind = environment.object("wind");
+    e.wind.velocity = wind.vector3_or("velocity", e.wind.velocity);
+    e.wind.gust_amplitude = wind.number_or("gust_amplitude", 0.0, between(0.0, 10.0, ""));
+    e.wind.gust_frequency = wind.number_or("gust_frequency", 0.0, non_negative(" (Hz)"));
+    e.wind.air_density =
+        wind.number_or("air_density", e.wind.air_density, non_negative(" (kg/m^3)"));
+    e.wind.drag_coefficient =
+        wind.number_or("drag_coefficient", e.wind.drag_coefficient, non_negative(""));
+    wind.finish();
+  }
+  environment.finish();
+}
+
+void read_output(JsonObjectReader output, OutputOptions& o) {
+  o.write_meshes = output.boolean_or("meshes", o.write_meshes);
+  o.mesh_format = mesh_format_from_string(output.choice_or("mesh_format", "obj", {"obj", "ply"}));
+  o.mesh_every = output.integer_or("mesh_every", 1, 1, std::numeric_limits<int>::max());
+  output.finish();
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& text, const std::filesystem::path& file,
+                        const std::vector<std::string>& overrides) {
+  const std::string name = file.string();
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::string what = e.what();
+    if (const auto cut = what.find("] "); cut != std::string::npos) what = what.substr(cut + 2);
+    throw ScenarioError(name + ": invalid JSON: " + what);
+  }
+  for (const std::string& assignment : overrides) apply_override(root, assignment, name);
+
+  Scenario s;
+  s.file = file;
+  JsonObjectReader top = object_reader(root, name, "");
+  s.name = top.has("name") ? top.string("name") : file.stem().string();
+  read_cloth(top.object("cloth"), s);
+  s.pins = read_pins(top);
+  if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
+  read_simulation(top.object("simulation"), s);
+  if (top.has("output")) read_output(top.object("output"), s.output);
+  top.finish();
+  return s;
+}
+
+Scenario load_scenario(const std::filesystem::path& file,
+                       const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw ScenarioError(file.string() + ": cannot open the scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario(text.str(), file, overrides);
+}
+
+}  // namespace tissu

@@ -1,0 +1,147 @@
+#include "lib/scenario/read_cloth.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tissu {
+namespace {
+
+GridOptions read_grid(JsonObjectReader grid) {
+  GridOptions o;
+  const std::vector<double> size = grid.numbers("size", 2, positive(" (m)"));
+  o.width = size[0];
+  o.height = size[1];
+  const std::vector<int> resolution = grid.integers("resolution", 1);
+  if (resolution.size() != 2) grid.fail("resolution", "two cell counts [along u, along v]");
+  o.cells_u = resolution[0];
+  o.cells_v = resolution[1];
+  o.cells = grid.choice_or("cells", "triangles", {"triangles", "quads"}) == "quads"
+                ? GridCells::quads
+                : GridCells::triangles;
+  const std::string diagonal =
+      grid.choice_or("diagonal", "alternating", {"forward", "backward", "alternating"});
+  o.diagonal = diagonal == "forward"    ? DiagonalPattern::forward
+               : diagonal == "backward" ? DiagonalPattern::backward
+                                        : DiagonalPattern::alternating;
+  o.origin = grid.vector3_or("origin", o.origin);
+  o.u_axis = grid.direction_or("u_axis", o.u_axis);
+  o.v_axis = grid.direction_or("v_axis", o.v_axis);
+  if (std::abs(o.u_axis.dot(o.v_axis)) > 1e-9)
+    grid.fail("v_axis", "a direction orthogonal to u_axis");
+  grid.finish();
+  return o;
+}
+
+ClothFrame read_frame(JsonObjectReader& section) {
+  ClothFrame frame;
+  frame.u_axis = section.direction_or("u_axis", frame.u_axis);
+  frame.v_axis = section.direction_or("v_axis", frame.v_axis);
+  return frame;
+}
+
+SpringKindSettings read_spring_kind(JsonObjectReader& springs, std::string_view kind) {
+  SpringKindSettings out;
+  if (!springs.has(kind)) return out;
+  JsonObjectReader section = springs.object(kind);
+  out.enabled = section.boolean_or("enabled", true);
+  out.stiffness = section.number("stiffness", positive(" (N/m)"));
+  out.damping = section.number_or("damping", 0.0, non_negative(" (N s/m)"));
+  section.finish();
+  return out;
+}
+
+Side read_side(JsonObjectReader& pin) {
+  const std::string side = pin.choice("side", {"left", "right", "bottom", "top"});
+  return side == "left"     ? Side::left
+         : side == "right"  ? Side::right
+         : side == "bottom" ? Side::bottom
+                            : Side::top;
+}
+
+std::vector<Corner> read_corners(JsonObjectReader& pin) {
+  const std::vector<std::string> names = {"bottom_left", "bottom_right", "top_left", "top_right"};
+  std::vector<Corner> corners;
+  for (const auto& [element, path] : pin.array("corners")) {
+    const auto it = element->is_string()
+                        ? std::find(names.begin(), names.end(), element->get<std::string>())
+                        : names.end();
+    if (it == names.end()) {
+      throw ScenarioError(pin.file() + ": " + path +
+                          ": expected one of \"bottom_left\", \"bottom_right\", \"top_left\", "
+                          "\"top_right\", got " +
+                          element->dump());
+    }
+    corners.push_back(static_cast<Corner>(it - names.begin()));
+  }
+  if (corners.empty()) pin.fail("corners", "at least one corner");
+  return corners;
+}
+
+PinSelector read_pin(JsonObjectReader pin) {
+  PinSelector s;
+  const int kinds = pin.has("side") + pin.has("corners") + pin.has("indices") + pin.has("box");
+  if (kinds != 1) {
+    throw ScenarioError(pin.file() + ": " + pin.path() +
+                        ": expected exactly one of \"side\", \"corners\", \"indices\", \"box\"");
+  }
+  if (pin.has("side")) {
+    s.kind = PinSelector::Kind::side;
+    s.side = read_side(pin);
+    s.every = pin.integer_or("every", 1, 1, std::numeric_limits<int>::max());
+  } else if (pin.has("corners")) {
+    s.kind = PinSelector::Kind::corners;
+    s.corners = read_corners(pin);
+  } else if (pin.has("indices")) {
+    s.kind = PinSelector::Kind::indices;
+    s.indices = pin.integers("indices", 0);
+  } else {
+    s.kind = PinSelector::Kind::box;
+    JsonObjectReader box = pin.object("box");
+    s.box = Eigen::AlignedBox3d(box.vector3("min"), box.vector3("max"));
+    if ((s.box.min().array() > s.box.max().array()).any())
+      box.fail("max", "max >= min on every axis");
+    box.finish();
+  }
+  pin.finish();
+  return s;
+}
+
+}  // namespace
+
+void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
+  if (cloth.has("grid") == cloth.has("mesh")) {
+    cloth.fail("grid", "exactly one of \"grid\" and \"mesh\" in \"cloth\"");
+  }
+  if (cloth.has("grid")) {
+    scenario.cloth.grid = read_grid(cloth.object("grid"));
+    scenario.cloth.frame = {scenario.cloth.grid->u_axis, scenario.cloth.grid->v_axis};
+  } else {
+    JsonObjectReader mesh = cloth.object("mesh");
+    const std::filesystem::path file = mesh.string("file");
+    scenario.cloth.mesh_file = file.is_absolute() ? file : scenario.file.parent_path() / file;
+    scenario.cloth.frame = read_frame(mesh);
+    mesh.finish();
+  }
+  scenario.areal_density = cloth.number("density", positive(" (kg/m^2)"));
+  JsonObjectReader springs = cloth.object("springs");
+  scenario.springs.structural = read_spring_kind(springs, "structural");
+  scenario.springs.shear = read_spring_kind(springs, "shear");
+  scenario.springs.bending = read_spring_kind(springs, "bending");
+  if (!scenario.springs.structural.enabled) {
+    springs.fail("structural",
+                 "structural springs: a cloth without them has no in-plane stiffness");
+  }
+  springs.finish();
+  cloth.finish();
+}
+
+std::vector<PinSelector> read_pins(JsonObjectReader& top) {
+  std::vector<PinSelector> pins;
+  if (!top.has("pins")) return pins;
+  for (const auto& [element, path] : top.array("pins")) {
+    pins.push_back(read_pin(object_reader(*element, top.file(), path)));
+  }
+  return pins;
+}
+
+}  // namespace tissu

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// A validated simulation scenario (schema: docs/scenario.md). CGAL-free.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lib/mesh_io/write_mesh.hpp"
+#include "solver/solver_params.hpp"
+#include "topology/grid_options.hpp"
+#include "topology/pin_selection.hpp"
+#include "topology/spring_settings.hpp"
+
+namespace tissu {
+
+/// Where the cloth's shape comes from: a generated grid or a mesh file.
+struct ClothSource {
+  std::optional<GridOptions> grid;  ///< set for a grid cloth
+  std::filesystem::path
+      mesh_file;     ///< set for a mesh cloth, resolved against the scenario's folder
+  ClothFrame frame;  ///< in-plane axes naming the sides (a grid's own u, v)
+};
+
+struct OutputOptions {
+  bool write_meshes = true;  ///< one mesh file per written frame
+  MeshFormat mesh_format = MeshFormat::obj;
+  int mesh_every = 1;  ///< write every n-th frame's mesh (frame 0 always)
+};
+
+struct Scenario {
+  std::string name;            ///< defaults to the file's stem
+  std::filesystem::path file;  ///< the scenario file, for messages
+  ClothSource cloth;
+  double areal_density = 0.0;  ///< mass per rest area (kg/m^2)
+  SpringSettings springs;
+  std::vector<PinSelector> pins;
+  SolverParams solver;       ///< time_step = 1 / (frame_rate substeps)
+  int frames = 1;            ///< frames simulated after frame 0
+  double frame_rate = 30.0;  ///< frames per simulated second (Hz)
+  int substeps = 1;          ///< solver steps per frame
+  int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default
+  OutputOptions output;
+};
+
+/// Reads, validates and returns the scenario in `file`. Each "key.path=value" of `overrides` is
+/// applied to the JSON before validation (value parsed as JSON, else taken as a string). JSON
+/// comments are allowed. Throws ScenarioError with one line naming the file, the key path and
+/// what was expected.
+Scenario load_scenario(const std::filesystem::path& file,
+                       const std::vector<std::string>& overrides = {});
+
+/// Same, from JSON text; `file` is used for messages and to resolve relative mesh paths.
+Scenario parse_scenario(const std::string& text, const std::filesystem::path& file,
+                        const std::vector<std::string>& overrides = {});
+
+}  // namespace tissu

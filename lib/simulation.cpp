@@ -1,0 +1,105 @@
+#include "lib/simulation.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "lib/cloth_setup.hpp"
+#include "solver/energy.hpp"
+#include "solver/step.hpp"
+#include "topology/compile.hpp"
+#include "topology/current_mesh.hpp"
+
+namespace tissu {
+namespace {
+
+std::filesystem::path frame_file(const std::filesystem::path& dir, const std::string& stem,
+                                 int frame, MeshFormat format) {
+  char number[16];
+  std::snprintf(number, sizeof number, "%05d", frame);
+  return dir / (stem + number + "." + extension(format));
+}
+
+FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
+                   const Environment& environment, int frame, int frame_count, double step_ms,
+                   int unconverged_steps) {
+  const SpringModel& m = cloth.model;
+  FrameStats s;
+  s.frame = frame;
+  s.frame_count = frame_count;
+  s.time = cloth.state.time;
+  s.particles = m.particle_count();
+  s.springs = m.spring_count();
+  s.faces = static_cast<int>(lcc.attributes<2>().size());
+  s.pinned = static_cast<int>(std::count(m.pinned.begin(), m.pinned.end(), 1));
+  s.total_mass = total_mass(m);
+  s.kinetic_energy = kinetic_energy(m, cloth.state);
+  s.potential_energy = potential_energy(m, environment.gravity, cloth.state);
+  s.step_ms = step_ms;
+  s.unconverged_steps = unconverged_steps;
+  return s;
+}
+
+}  // namespace
+
+RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
+  if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
+  const int frame_count = options.frames.value_or(scenario.frames);
+  const OutputOptions& output = scenario.output;
+  std::filesystem::create_directories(options.output_dir);
+
+  ClothComplex lcc;
+  build_scenario_cloth(scenario, lcc);
+  CompiledCloth cloth = compile(lcc);
+  StatsCsv stats(options.output_dir / "stats.csv");
+
+  auto record = [&](int frame, double step_ms, int unconverged) {
+    const FrameStats row =
+        measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
+    stats.write(row);
+    if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
+      write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
+                 current_mesh(lcc), output.mesh_format);
+    }
+    if (options.on_frame) options.on_frame(row);
+  };
+  record(0, 0.0, 0);
+
+  RunResult result;
+  StepWorkspace workspace;
+  for (int frame = 1; frame <= frame_count; ++frame) {
+    State next = cloth.state;
+    int unconverged = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int sub = 0; sub < scenario.substeps; ++sub) {
+      const StepStatus status = step(cloth.model, scenario.solver, next, workspace);
+      if (status == StepStatus::not_converged) ++unconverged;
+      if (status == StepStatus::non_finite) {
+        // the complex still holds the last good frame
+        const auto last_good =
+            frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
+        write_mesh(last_good, current_mesh(lcc), output.mesh_format);
+        result.ok = false;
+        result.failure = "frame " + std::to_string(frame) + ", step " + std::to_string(sub + 1) +
+                         " of " + std::to_string(scenario.substeps) +
+                         " (t = " + std::to_string(next.time) + " s): " + to_string(status) +
+                         " positions or velocities; the time step " +
+                         std::to_string(scenario.solver.time_step) +
+                         " s is likely too large for the stiffness (more substeps or the "
+                         "implicit_euler integrator help); last good state written to " +
+                         last_good.string();
+        return result;
+      }
+    }
+    const double step_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    cloth.state = std::move(next);
+    write_back(cloth, cloth.state, lcc);
+    record(frame, step_ms, unconverged);
+    result.frames_done = frame;
+  }
+  return result;
+}
+
+}  // namespace tissu

@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Runs a scenario: builds the cloth, steps it frame by frame, writes meshes and statistics.
+/// CGAL-free.
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "lib/frame_stats.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace tissu {
+
+struct RunOptions {
+  std::filesystem::path output_dir = "out";  ///< created if missing; files in it are overwritten
+  std::optional<int> frames;                 ///< overrides the scenario's frame count
+  std::function<void(const FrameStats&)> on_frame;  ///< called after each frame, e.g. progress
+};
+
+struct RunResult {
+  int frames_done = 0;  ///< frames completed after frame 0
+  bool ok = true;
+  std::string failure;  ///< when !ok: the frame, the cause and where the last good state is
+};
+
+/// Runs `scenario`. Bad meshes or pins throw (MeshError, PinError) before the first step; a solver
+/// failure stops the run with ok = false after writing the last good state.
+RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
+
+}  // namespace tissu

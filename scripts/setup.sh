@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs tissu's build and test dependencies from Debian bookworm's packages (run as root).
+# Does nothing when they are already installed.
+set -euo pipefail
+packages=(
+  cmake ninja-build g++ pkg-config
+  libcgal-dev libeigen3-dev libassimp-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

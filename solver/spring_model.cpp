@@ -1,0 +1,95 @@
+#include "solver/spring_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tissu {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument("finalize_model: " + what);
+}
+
+void check_sizes(const SpringModel& model) {
+  const auto particles = static_cast<std::size_t>(model.particle_count());
+  const Eigen::Index springs = model.spring_count();
+  if (model.pinned.size() != particles) {
+    fail("pinned has " + std::to_string(model.pinned.size()) +
+         " entries, expected #P = " + std::to_string(particles));
+  }
+  if (model.rest_length.size() != springs || model.stiffness.size() != springs ||
+      model.damping.size() != springs || model.kind.size() != static_cast<std::size_t>(springs)) {
+    fail("rest_length, stiffness, damping and kind must have #S = " + std::to_string(springs) +
+         " entries");
+  }
+}
+
+void check_values(const SpringModel& model) {
+  const int particles = model.particle_count();
+  for (int p = 0; p < particles; ++p) {
+    if (!std::isfinite(model.mass[p]) || (model.mass[p] <= 0.0 && !model.pinned[p])) {
+      fail("particle " + std::to_string(p) + " has mass " + std::to_string(model.mass[p]) +
+           " kg, expected a finite positive mass (or a pinned particle)");
+    }
+  }
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const int i = model.springs(s, 0);
+    const int j = model.springs(s, 1);
+    if (i < 0 || j < 0 || i >= particles || j >= particles || i == j) {
+      fail("spring " + std::to_string(s) + " joins particles " + std::to_string(i) + " and " +
+           std::to_string(j) + ", expected two distinct ids in [0, " + std::to_string(particles) +
+           ")");
+    }
+    if (!(model.rest_length[s] >= 0.0) || !(model.stiffness[s] >= 0.0) ||
+        !(model.damping[s] >= 0.0) || !std::isfinite(model.rest_length[s]) ||
+        !std::isfinite(model.stiffness[s]) || !std::isfinite(model.damping[s])) {
+      fail("spring " + std::to_string(s) + " has a negative or non-finite rest length, " +
+           "stiffness or damping");
+    }
+  }
+  for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const int p = model.triangles(t, c);
+      if (p < 0 || p >= particles) {
+        fail("triangle " + std::to_string(t) + " refers to particle " + std::to_string(p) +
+             ", expected an id in [0, " + std::to_string(particles) + ")");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void finalize_model(SpringModel& model) {
+  check_sizes(model);
+  check_values(model);
+  const int particles = model.particle_count();
+  const int springs = model.spring_count();
+
+  model.inverse_mass.resize(particles);
+  for (int p = 0; p < particles; ++p) {
+    model.inverse_mass[p] = model.pinned[p] ? 0.0 : 1.0 / model.mass[p];
+  }
+
+  // counting sort of the 2 #S spring ends by particle; springs stay ascending within a row
+  ParticleSpringIncidence& incidence = model.incidence;
+  incidence.offsets.assign(particles + 1, 0);
+  for (int s = 0; s < springs; ++s) {
+    ++incidence.offsets[model.springs(s, 0) + 1];
+    ++incidence.offsets[model.springs(s, 1) + 1];
+  }
+  for (int p = 0; p < particles; ++p) incidence.offsets[p + 1] += incidence.offsets[p];
+  incidence.springs.assign(2 * springs, 0);
+  incidence.first_end.assign(2 * springs, 0);
+  std::vector<int> cursor(incidence.offsets.begin(), incidence.offsets.end() - 1);
+  for (int s = 0; s < springs; ++s) {
+    for (int end = 0; end < 2; ++end) {
+      const int entry = cursor[model.springs(s, end)]++;
+      incidence.springs[entry] = s;
+      incidence.first_end[entry] = end == 0 ? 1 : 0;
+    }
+  }
+}
+
+}  // namespace tissu

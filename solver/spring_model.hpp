@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// The flat model the solver steps: compiled from the cloth complex (topology/compile.hpp), fixed
+/// between two topological changes. Structure of arrays; every field states its shape and unit.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace tissu {
+
+/// Role of a spring in the cloth (Provot 1995): along an edge, across a quad, across a hinge.
+enum class SpringKind : std::uint8_t { structural = 0, shear = 1, bending = 2 };
+inline constexpr int spring_kind_count = 3;
+
+/// Compressed rows of the particle -> spring incidence, for deterministic gathers:
+/// the springs of particle i are entries [offsets[i], offsets[i+1]).
+struct ParticleSpringIncidence {
+  std::vector<int> offsets;            ///< #P+1
+  std::vector<int> springs;            ///< #incidences, spring ids, ascending within a row
+  std::vector<std::int8_t> first_end;  ///< #incidences, 1 if the particle is springs(s,0), else 0
+};
+
+/// Particles, springs and surface triangles of one cloth, ready to be stepped.
+struct SpringModel {
+  Eigen::VectorXd mass;               ///< #P lumped particle masses (kg)
+  Eigen::VectorXd inverse_mass;       ///< #P 1/mass, 0 for pinned particles (1/kg)
+  std::vector<std::uint8_t> pinned;   ///< #P 1 if the particle's motion is prescribed
+  Eigen::MatrixX2i springs;           ///< #S x 2 particle ids (i, j)
+  Eigen::VectorXd rest_length;        ///< #S rest lengths l0 (m)
+  Eigen::VectorXd stiffness;          ///< #S stiffnesses k (N/m)
+  Eigen::VectorXd damping;            ///< #S viscous coefficients nu (N s/m)
+  std::vector<SpringKind> kind;       ///< #S
+  Eigen::MatrixX3i triangles;         ///< #T x 3 particle ids of the surface, quads split in two,
+                                      ///< counter-clockwise seen from the front; for aerodynamics
+  ParticleSpringIncidence incidence;  ///< filled by finalize_model()
+
+  int particle_count() const { return static_cast<int>(mass.size()); }
+  int spring_count() const { return static_cast<int>(springs.rows()); }
+};
+
+/// Fills the derived fields (inverse_mass, incidence) from the others. Call after filling a model.
+void finalize_model(SpringModel& model);
+
+/// Dynamic state: positions and velocities of every particle, xyz interleaved.
+struct State {
+  Eigen::VectorXd x;  ///< 3#P positions (m)
+  Eigen::VectorXd v;  ///< 3#P velocities (m/s)
+  double time = 0.0;  ///< simulated time (s)
+};
+
+}  // namespace tissu

@@ -1,0 +1,67 @@
+#include "solver/step.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "solver/integrators/implicit_euler.hpp"
+#include "solver/integrators/position_verlet.hpp"
+#include "solver/integrators/symplectic_euler.hpp"
+
+namespace tissu {
+namespace {
+
+void check_state_size(const SpringModel& model, const State& state) {
+  const Eigen::Index dofs = 3 * static_cast<Eigen::Index>(model.particle_count());
+  if (state.x.size() != dofs || state.v.size() != dofs) {
+    throw std::invalid_argument("step: state has " + std::to_string(state.x.size()) +
+                                " positions and " + std::to_string(state.v.size()) +
+                                " velocities, expected 3#P = " + std::to_string(dofs) + " each");
+  }
+  if (model.inverse_mass.size() != model.mass.size() ||
+      model.incidence.offsets.size() != static_cast<std::size_t>(model.particle_count()) + 1) {
+    throw std::invalid_argument("step: model is not finalized, call finalize_model() first");
+  }
+}
+
+}  // namespace
+
+const char* to_string(StepStatus status) {
+  switch (status) {
+    case StepStatus::ok:
+      return "ok";
+    case StepStatus::non_finite:
+      return "non_finite";
+    case StepStatus::not_converged:
+      return "not_converged";
+  }
+  return "unknown";
+}
+
+StepStatus step(const SpringModel& model, const SolverParams& params, State& state) {
+  StepWorkspace workspace;
+  return step(model, params, state, workspace);
+}
+
+StepStatus step(const SpringModel& model, const SolverParams& params, State& state,
+                StepWorkspace& workspace) {
+  check_state_size(model, state);
+  StepStatus status = StepStatus::ok;
+  switch (params.integrator) {
+    case Integrator::symplectic_euler:
+      status = symplectic_euler_step(model, params, state, workspace);
+      break;
+    case Integrator::position_verlet:
+      status = position_verlet_step(model, params, state, workspace);
+      break;
+    case Integrator::implicit_euler:
+      status = implicit_euler_step(model, params, state, workspace);
+      break;
+  }
+  state.time += params.time_step;
+  if (status == StepStatus::non_finite || !state.x.allFinite() || !state.v.allFinite()) {
+    return StepStatus::non_finite;
+  }
+  return status;
+}
+
+}  // namespace tissu

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// One time step of the mass-spring system.
+
+#include "solver/solver_params.hpp"
+#include "solver/spring_model.hpp"
+#include "solver/step_workspace.hpp"
+
+namespace tissu {
+
+enum class StepStatus {
+  ok,
+  non_finite,     ///< a position or velocity became NaN or infinite; the state is not usable
+  not_converged,  ///< the implicit linear solve did not reach its tolerance
+};
+
+const char* to_string(StepStatus status);
+
+/// Advances `state` by params.time_step with the chosen integrator. Pinned particles keep their
+/// velocity (zero unless prescribed). On non_finite the state is left as computed (the caller keeps
+/// the last good state); the model is never modified.
+StepStatus step(const SpringModel& model, const SolverParams& params, State& state);
+
+/// Same as step(model, params, state), with the scratch buffers kept by the caller between steps:
+/// no heap allocation once the sizes are known, except the few vectors of the implicit
+/// integrator's conjugate gradient.
+/// One workspace per concurrently stepped model; it adapts by itself when the model changes.
+StepStatus step(const SpringModel& model, const SolverParams& params, State& state,
+                StepWorkspace& workspace);
+
+}  // namespace tissu

@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// Scratch buffers of a time step, owned by the caller (like MuJoCo's mjData) so that stepping
+/// allocates nothing once the sizes are known. Not shared between threads stepping concurrently.
+
+#include <Eigen/Core>
+
+#include "solver/forces/accumulate_forces.hpp"
+#include "solver/integrators/implicit_euler_workspace.hpp"
+
+namespace tissu {
+
+struct StepWorkspace {
+  ForceWorkspace forces;            ///< buffers of accumulate_forces()
+  Eigen::VectorXd force;            ///< 3#P total force of the last evaluation (N)
+  ImplicitEulerWorkspace implicit;  ///< buffers of implicit_euler_step()
+};
+
+}  // namespace tissu

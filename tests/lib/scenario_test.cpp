@@ -1,0 +1,203 @@
+#include "lib/scenario/scenario.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "lib/scenario/scenario_error.hpp"
+
+namespace tissu {
+namespace {
+
+using ::testing::HasSubstr;
+
+const char* const minimal = R"({
+  // a comment, allowed
+  "cloth": {
+    "grid": { "size": [1.0, 0.5], "resolution": [4, 2] },
+    "density": 0.2,
+    "springs": { "structural": { "stiffness": 100 } }
+  },
+  "simulation": { "frames": 3 }
+})";
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_scenario(text, "dir/s.json", overrides);
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string with(const std::string& key, const std::string& value) {
+  return error_of(minimal, {key + "=" + value});
+}
+
+TEST(Scenario, MinimalScenarioGetsDocumentedDefaults) {
+  const Scenario s = parse_scenario(minimal, "dir/s.json");
+  EXPECT_EQ(s.name, "s");
+  ASSERT_TRUE(s.cloth.grid.has_value());
+  EXPECT_EQ(s.cloth.grid->cells_u, 4);
+  EXPECT_EQ(s.cloth.grid->cells, GridCells::triangles);
+  EXPECT_EQ(s.cloth.grid->diagonal, DiagonalPattern::alternating);
+  EXPECT_TRUE(s.springs.structural.enabled);
+  EXPECT_DOUBLE_EQ(s.springs.structural.stiffness, 100.0);
+  EXPECT_FALSE(s.springs.shear.enabled);
+  EXPECT_FALSE(s.springs.bending.enabled);
+  EXPECT_EQ(s.solver.integrator, Integrator::implicit_euler);
+  EXPECT_EQ(s.frames, 3);
+  EXPECT_EQ(s.substeps, 10);
+  EXPECT_DOUBLE_EQ(s.solver.time_step, 1.0 / 300.0);
+  EXPECT_EQ(s.solver.environment.gravity, Eigen::Vector3d(0, 0, -9.81));
+  EXPECT_EQ(s.output.mesh_format, MeshFormat::obj);
+  EXPECT_TRUE(s.pins.empty());
+}
+
+TEST(Scenario, ReadsEverySection) {
+  const Scenario s = parse_scenario(R"({
+    "name": "full",
+    "cloth": {
+      "mesh": { "file": "meshes/flag.obj", "u_axis": [0, 1, 0], "v_axis": [0, 0, 2] },
+      "density": 0.3,
+      "springs": { "structural": { "stiffness": 10, "damping": 1 },
+                   "shear": { "stiffness": 5, "enabled": false },
+                   "bending": { "stiffness": 1, "damping": 0.5 } }
+    },
+    "pins": [ { "side": "top", "every": 2 }, { "corners": ["bottom_left"] },
+              { "indices": [0, 4] }, { "box": { "min": [0, 0, 0], "max": [1, 1, 1] } } ],
+    "environment": { "gravity": [0, -9.8, 0], "air_damping": 0.2,
+                     "wind": { "velocity": [1, 2, 3], "gust_amplitude": 0.5, "gust_frequency": 2,
+                               "air_density": 1.1, "drag_coefficient": 0.8 } },
+    "simulation": { "integrator": "position_verlet", "frames": 7, "frame_rate": 25,
+                    "time_step": 0.001, "threads": 2 },
+    "output": { "meshes": false, "mesh_format": "ply", "mesh_every": 5 }
+  })",
+                                    "dir/full.json");
+  EXPECT_EQ(s.name, "full");
+  EXPECT_EQ(s.cloth.mesh_file, std::filesystem::path("dir/meshes/flag.obj"));
+  EXPECT_EQ(s.cloth.frame.v_axis, Eigen::Vector3d(0, 0, 1));
+  EXPECT_FALSE(s.springs.shear.enabled);
+  EXPECT_DOUBLE_EQ(s.springs.bending.damping, 0.5);
+  ASSERT_EQ(s.pins.size(), 4u);
+  EXPECT_EQ(s.pins[0].kind, PinSelector::Kind::side);
+  EXPECT_EQ(s.pins[0].every, 2);
+  EXPECT_EQ(s.pins[1].corners, std::vector<Corner>{Corner::bottom_left});
+  EXPECT_EQ(s.pins[2].indices, (std::vector<int>{0, 4}));
+  EXPECT_EQ(s.pins[3].box.max(), Eigen::Vector3d(1, 1, 1));
+  EXPECT_DOUBLE_EQ(s.solver.environment.wind.drag_coefficient, 0.8);
+  EXPECT_EQ(s.solver.integrator, Integrator::position_verlet);
+  EXPECT_EQ(s.substeps, 40);
+  EXPECT_DOUBLE_EQ(s.solver.time_step, 0.001);
+  EXPECT_EQ(s.threads, 2);
+  EXPECT_FALSE(s.output.write_meshes);
+  EXPECT_EQ(s.output.mesh_format, MeshFormat::ply);
+}
+
+TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
+  std::string text = minimal;
+  text.replace(text.find("\"density\""), 9, "\"densty\"");
+  EXPECT_EQ(error_of(text), "dir/s.json: cloth.densty: unknown key; did you mean 'density'?");
+}
+
+TEST(Scenario, UnknownKeyFarFromAnyIsListedWithTheKnownOnes) {
+  EXPECT_THAT(with("simulation.zzzzzzzzzz", "1"),
+              HasSubstr("dir/s.json: simulation.zzzzzzzzzz: unknown key; known keys here:"));
+}
+
+TEST(Scenario, WrongTypesNameTheKeyAndWhatWasExpected) {
+  EXPECT_EQ(with("cloth.density", "\"heavy\""),
+            "dir/s.json: cloth.density: expected a positive number (kg/m^2), got \"heavy\"");
+  EXPECT_EQ(with("simulation.frames", "2.5"),
+            "dir/s.json: simulation.frames: expected an integer from 1 to 10000000, got 2.5");
+  EXPECT_EQ(with("cloth.grid.size", "[1]"),
+            "dir/s.json: cloth.grid.size: expected an array of 2 numbers, each a positive number "
+            "(m), got [1]");
+  EXPECT_THAT(with("environment.gravity", "[0, 0]"),
+              HasSubstr("environment.gravity: expected an array of 3 finite numbers"));
+  EXPECT_THAT(with("output", "[]"), HasSubstr("dir/s.json: output: expected an object"));
+  EXPECT_THAT(with("output.meshes", "1"), HasSubstr("output.meshes: expected true or false"));
+}
+
+TEST(Scenario, OutOfRangeValuesNameTheRange) {
+  EXPECT_EQ(with("cloth.density", "-1"),
+            "dir/s.json: cloth.density: expected a positive number (kg/m^2), got -1");
+  EXPECT_THAT(with("cloth.springs.structural.damping", "-0.1"),
+              HasSubstr("expected a number >= 0 (N s/m), got -0.1"));
+  EXPECT_THAT(with("cloth.grid.resolution", "[0, 3]"),
+              HasSubstr("cloth.grid.resolution: expected a non-empty array of integers >= 1"));
+  EXPECT_THAT(with("simulation.integrator", "\"rk4\""),
+              HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
+                        "\"position_verlet\", \"implicit_euler\", got \"rk4\""));
+  EXPECT_THAT(with("environment.wind.gust_amplitude", "11"),
+              HasSubstr("expected a number between 0 and 10"));
+  EXPECT_THAT(with("simulation.time_step", "0.007"),
+              HasSubstr("simulation.time_step: expected a time step that divides"));
+}
+
+TEST(Scenario, MissingRequiredKeysAreNamed) {
+  EXPECT_EQ(error_of(R"({"cloth": {"grid": {"size": [1, 1], "resolution": [1, 1]},
+                                    "springs": {"structural": {"stiffness": 1}}},
+                         "simulation": {"frames": 1}})"),
+            "dir/s.json: cloth.density: missing; expected a positive number (kg/m^2)");
+  EXPECT_EQ(error_of(R"({"simulation": {"frames": 1}})"),
+            "dir/s.json: cloth: missing; expected an object {...}");
+  EXPECT_THAT(with("cloth.springs.structural", "{\"enabled\": false, \"stiffness\": 1}"),
+              HasSubstr("cloth.springs.structural: expected structural springs"));
+}
+
+TEST(Scenario, ConflictingChoicesAreRejected) {
+  EXPECT_THAT(with("cloth.mesh", "{\"file\": \"a.obj\"}"),
+              HasSubstr("expected exactly one of \"grid\" and \"mesh\""));
+  EXPECT_THAT(error_of(minimal, {"simulation.time_step=0.001", "simulation.substeps=3"}),
+              HasSubstr("either \"substeps\" or \"time_step\", not both"));
+  EXPECT_THAT(error_of(minimal, {"pins=[{\"side\": \"top\", \"box\": {}}]"}),
+              HasSubstr("dir/s.json: pins[0]: expected exactly one of"));
+  EXPECT_THAT(error_of(minimal, {"pins=[{\"corners\": [\"middle\"]}]"}),
+              HasSubstr("dir/s.json: pins[0].corners[0]: expected one of \"bottom_left\""));
+  EXPECT_THAT(error_of(minimal, {"pins=[{\"box\": {\"min\": [1,1,1], \"max\": [0,0,0]}}]"}),
+              HasSubstr("pins[0].box.max: expected max >= min"));
+}
+
+TEST(Scenario, InvalidJsonGivesTheLineAndColumn) {
+  EXPECT_THAT(
+      error_of("{ \"cloth\": { ,"),
+      HasSubstr("dir/s.json: invalid JSON: parse error at line 1, column 14: syntax error"));
+}
+
+TEST(Scenario, OverridesSetNestedValuesAndArrayElements) {
+  const Scenario s = parse_scenario(minimal, "dir/s.json",
+                                    {"cloth.density=0.5", "simulation.integrator=symplectic_euler",
+                                     "pins=[{\"side\": \"top\"}]", "pins.0.every=3"});
+  EXPECT_DOUBLE_EQ(s.areal_density, 0.5);
+  EXPECT_EQ(s.solver.integrator, Integrator::symplectic_euler);
+  ASSERT_EQ(s.pins.size(), 1u);
+  EXPECT_EQ(s.pins[0].every, 3);
+}
+
+TEST(Scenario, BadOverridesAreNamed) {
+  EXPECT_EQ(error_of(minimal, {"cloth.density"}),
+            "dir/s.json: --set cloth.density: expected key.path=value");
+  EXPECT_THAT(error_of(minimal, {"cloth.density.x=1"}),
+              HasSubstr("'cloth.density' is not an object"));
+  EXPECT_THAT(error_of(minimal, {"pins=[]", "pins.3=1"}),
+              HasSubstr("'pins' is an array; expected an index below 0"));
+}
+
+TEST(Scenario, MissingFileIsNamed) {
+  try {
+    load_scenario("no/such/file.json");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_STREQ(e.what(), "no/such/file.json: cannot open the scenario file");
+  }
+}
+
+TEST(Scenario, ShippedScenariosLoad) {
+  for (const char* name : {"curtain.json"}) {
+    const Scenario s = load_scenario(std::filesystem::path(TISSU_DATA_DIR) / "scenarios" / name);
+    EXPECT_GT(s.frames, 0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace tissu

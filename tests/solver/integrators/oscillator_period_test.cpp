@@ -1,0 +1,129 @@
+// One mass on one spring whose other end is pinned: the period of every integrator against the
+// exact 2 pi sqrt(m / k).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <vector>
+
+#include "solver/step.hpp"
+
+namespace tissu {
+
+// readable parameter names in gtest and ctest output
+void PrintTo(Integrator integrator, std::ostream* out) {
+  *out << (integrator == Integrator::symplectic_euler  ? "symplectic_euler"
+           : integrator == Integrator::position_verlet ? "position_verlet"
+                                                       : "implicit_euler");
+}
+
+namespace {
+
+constexpr double mass_kg = 0.5;
+constexpr double stiffness_npm = 200.0;
+constexpr double rest_length_m = 1.0;
+constexpr double amplitude_m = 0.1;
+
+SpringModel oscillator(State& state) {
+  SpringModel model;
+  model.mass = Eigen::Vector2d(1.0, mass_kg);
+  model.pinned = {1, 0};
+  model.springs.resize(1, 2);
+  model.springs << 0, 1;
+  model.rest_length = Eigen::VectorXd::Constant(1, rest_length_m);
+  model.stiffness = Eigen::VectorXd::Constant(1, stiffness_npm);
+  model.damping = Eigen::VectorXd::Zero(1);
+  model.kind = {SpringKind::structural};
+  model.triangles.resize(0, 3);
+  finalize_model(model);
+  state.x = Eigen::VectorXd::Zero(6);
+  state.x[3] = rest_length_m + amplitude_m;
+  state.v = Eigen::VectorXd::Zero(6);
+  return model;
+}
+
+// mean time between upward zero crossings of the elongation, over several periods (s)
+double measured_period(Integrator integrator, double time_step_s, int periods) {
+  State state;
+  const SpringModel model = oscillator(state);
+  SolverParams params;
+  params.integrator = integrator;
+  params.time_step = time_step_s;
+  params.environment.gravity.setZero();
+  params.implicit.cg_tolerance = 1e-12;
+  StepWorkspace workspace;
+  const double exact = 2.0 * std::numbers::pi * std::sqrt(mass_kg / stiffness_npm);
+  const int steps = static_cast<int>((periods + 0.5) * exact / time_step_s);
+  std::vector<double> crossings;
+  double previous = state.x[3] - rest_length_m;
+  for (int n = 0; n < steps; ++n) {
+    const double previous_time = state.time;
+    EXPECT_EQ(step(model, params, state, workspace), StepStatus::ok);
+    const double elongation = state.x[3] - rest_length_m;
+    if (previous < 0.0 && elongation >= 0.0) {
+      const double fraction = -previous / (elongation - previous);
+      crossings.push_back(previous_time + fraction * (state.time - previous_time));
+    }
+    previous = elongation;
+  }
+  EXPECT_GE(crossings.size(), static_cast<std::size_t>(periods - 1));
+  if (crossings.size() < 2) return 0.0;
+  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+class OscillatorPeriod : public testing::TestWithParam<Integrator> {};
+
+TEST_P(OscillatorPeriod, WithinOnePercentOfTheExactPeriod) {
+  const double exact = 2.0 * std::numbers::pi * std::sqrt(mass_kg / stiffness_npm);
+  const double period = measured_period(GetParam(), 1e-4, 6);
+  EXPECT_NEAR(period, exact, 0.01 * exact);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, OscillatorPeriod,
+                         testing::Values(Integrator::symplectic_euler, Integrator::position_verlet,
+                                         Integrator::implicit_euler),
+                         [](const testing::TestParamInfo<Integrator>& info) {
+                           switch (info.param) {
+                             case Integrator::symplectic_euler:
+                               return "symplectic_euler";
+                             case Integrator::position_verlet:
+                               return "position_verlet";
+                             case Integrator::implicit_euler:
+                               return "implicit_euler";
+                           }
+                           return "unknown";
+                         });
+
+// |x(T) - x_exact(T)| after T = 1 s, x_exact = l0 + A cos(omega t) (m)
+double position_error(Integrator integrator, double time_step_s) {
+  State state;
+  const SpringModel model = oscillator(state);
+  SolverParams params;
+  params.integrator = integrator;
+  params.time_step = time_step_s;
+  params.environment.gravity.setZero();
+  params.implicit.cg_tolerance = 1e-12;
+  StepWorkspace workspace;
+  const int steps = static_cast<int>(std::lround(1.0 / time_step_s));
+  for (int n = 0; n < steps; ++n) step(model, params, state, workspace);
+  const double omega = std::sqrt(stiffness_npm / mass_kg);
+  return std::abs(state.x[3] - (rest_length_m + amplitude_m * std::cos(omega * state.time)));
+}
+
+TEST(OscillatorConvergence, VerletIsSecondOrderAndTheEulersFirstOrder) {
+  // halving h divides the error by about 4 for a second-order scheme, by about 2 for first order
+  const double verlet = position_error(Integrator::position_verlet, 2e-3) /
+                        position_error(Integrator::position_verlet, 1e-3);
+  EXPECT_NEAR(verlet, 4.0, 0.4);
+  const double symplectic = position_error(Integrator::symplectic_euler, 2e-3) /
+                            position_error(Integrator::symplectic_euler, 1e-3);
+  EXPECT_NEAR(symplectic, 2.0, 0.3);
+  const double implicit = position_error(Integrator::implicit_euler, 2e-3) /
+                          position_error(Integrator::implicit_euler, 1e-3);
+  EXPECT_NEAR(implicit, 2.0, 0.3);
+}
+
+}  // namespace
+}  // namespace tissu

@@ -1,0 +1,119 @@
+#pragma once
+/// \file
+/// Small models shared by the solver tests.
+
+#include <Eigen/Core>
+#include <random>
+#include <vector>
+
+#include "solver/spring_model.hpp"
+
+namespace tissu::test {
+
+/// `particles` particles scattered in the unit cube, `springs` springs between random distinct
+/// pairs with rest lengths 0.7 to 1.3 times their current length (some stretched, some
+/// compressed), random stiffness, damping and masses, and `triangles` random triangles. Fills x
+/// (3#P, m) and v (3#P, m/s, random).
+inline SpringModel random_model(int particles, int springs, int triangles, unsigned seed,
+                                State& state) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, particles - 1);
+  SpringModel model;
+  state.x.resize(3 * particles);
+  state.v.resize(3 * particles);
+  for (int i = 0; i < 3 * particles; ++i) {
+    state.x[i] = unit(rng);
+    state.v[i] = 2.0 * unit(rng) - 1.0;
+  }
+  model.mass.resize(particles);
+  for (int p = 0; p < particles; ++p) model.mass[p] = 0.01 + 0.1 * unit(rng);
+  model.pinned.assign(particles, 0);
+  model.springs.resize(springs, 2);
+  model.rest_length.resize(springs);
+  model.stiffness.resize(springs);
+  model.damping.resize(springs);
+  model.kind.assign(springs, SpringKind::structural);
+  for (int s = 0; s < springs; ++s) {
+    const int i = pick(rng);
+    int j = pick(rng);
+    while (j == i) j = pick(rng);
+    model.springs(s, 0) = i;
+    model.springs(s, 1) = j;
+    const double length = (state.x.segment<3>(3 * i) - state.x.segment<3>(3 * j)).norm();
+    model.rest_length[s] = length * (0.7 + 0.6 * unit(rng));
+    model.stiffness[s] = 10.0 + 90.0 * unit(rng);
+    model.damping[s] = unit(rng);
+  }
+  model.triangles.resize(triangles, 3);
+  for (int t = 0; t < triangles; ++t) {
+    const int a = pick(rng);
+    int b = pick(rng);
+    while (b == a) b = pick(rng);
+    int c = pick(rng);
+    while (c == a || c == b) c = pick(rng);
+    model.triangles.row(t) << a, b, c;
+  }
+  finalize_model(model);
+  return model;
+}
+
+/// A flat nx x ny grid of particles in the z = 0 plane, `spacing` (m) apart, each of mass
+/// `particle_mass` (kg), with structural springs along the grid lines, shear springs across each
+/// quad and bending springs two apart, all of stiffness k (N/m), damping nu (N s/m), at rest;
+/// two triangles per quad. Particle id = row * nx + column. State at rest, v = 0.
+inline SpringModel grid_model(int nx, int ny, double spacing, double particle_mass, double k,
+                              double nu, State& state) {
+  SpringModel model;
+  const int particles = nx * ny;
+  const auto id = [nx](int column, int row) { return row * nx + column; };
+  state.x.resize(3 * particles);
+  state.v.setZero(3 * particles);
+  for (int row = 0; row < ny; ++row) {
+    for (int column = 0; column < nx; ++column) {
+      state.x.segment<3>(3 * id(column, row)) << column * spacing, row * spacing, 0.0;
+    }
+  }
+  model.mass.setConstant(particles, particle_mass);
+  model.pinned.assign(particles, 0);
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<SpringKind> kinds;
+  const auto add = [&](int a, int b, SpringKind kind) {
+    pairs.emplace_back(a, b);
+    kinds.push_back(kind);
+  };
+  std::vector<Eigen::Vector3i> triangles;
+  for (int row = 0; row < ny; ++row) {
+    for (int column = 0; column < nx; ++column) {
+      if (column + 1 < nx) add(id(column, row), id(column + 1, row), SpringKind::structural);
+      if (row + 1 < ny) add(id(column, row), id(column, row + 1), SpringKind::structural);
+      if (column + 1 < nx && row + 1 < ny) {
+        add(id(column, row), id(column + 1, row + 1), SpringKind::shear);
+        add(id(column + 1, row), id(column, row + 1), SpringKind::shear);
+        triangles.emplace_back(id(column, row), id(column + 1, row), id(column + 1, row + 1));
+        triangles.emplace_back(id(column, row), id(column + 1, row + 1), id(column, row + 1));
+      }
+      if (column + 2 < nx) add(id(column, row), id(column + 2, row), SpringKind::bending);
+      if (row + 2 < ny) add(id(column, row), id(column, row + 2), SpringKind::bending);
+    }
+  }
+  const int springs = static_cast<int>(pairs.size());
+  model.springs.resize(springs, 2);
+  model.rest_length.resize(springs);
+  model.stiffness.setConstant(springs, k);
+  model.damping.setConstant(springs, nu);
+  model.kind = kinds;
+  for (int s = 0; s < springs; ++s) {
+    model.springs.row(s) << pairs[s].first, pairs[s].second;
+    model.rest_length[s] =
+        (state.x.segment<3>(3 * pairs[s].first) - state.x.segment<3>(3 * pairs[s].second)).norm();
+  }
+  model.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    model.triangles.row(static_cast<Eigen::Index>(t)) = triangles[t].transpose();
+  }
+  finalize_model(model);
+  return model;
+}
+
+}  // namespace tissu::test

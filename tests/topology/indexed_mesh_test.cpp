@@ -1,0 +1,143 @@
+#include "topology/indexed_mesh.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+namespace tissu {
+namespace {
+
+using ::testing::HasSubstr;
+
+/// A unit quad (0 1 2 3) in the x-z plane and a triangle (1 4 2) beside it, consistently oriented.
+IndexedMesh quad_and_triangle() {
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}, {2, 0, 0.5}};
+  mesh.faces = {{0, 1, 2, 3}, {1, 4, 2}};
+  return mesh;
+}
+
+/// The message validate_indexed_mesh throws for `mesh`, or "" if it passes.
+std::string validation_message(const IndexedMesh& mesh) {
+  try {
+    validate_indexed_mesh(mesh);
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ValidateIndexedMesh, AcceptsTriangleAndQuad) {
+  EXPECT_NO_THROW(validate_indexed_mesh(quad_and_triangle()));
+}
+
+TEST(ValidateIndexedMesh, AcceptsQuadGrid) {
+  constexpr int n = 20;
+  IndexedMesh mesh;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      mesh.vertices.emplace_back(i, 0, j);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int v = j * (n + 1) + i;
+      mesh.faces.push_back({v, v + 1, v + n + 2, v + n + 1});
+    }
+  }
+  EXPECT_NO_THROW(validate_indexed_mesh(mesh));
+}
+
+TEST(ValidateIndexedMesh, DegeneracyIsRelativeToMeshSize) {
+  IndexedMesh mesh = quad_and_triangle();
+  for (Eigen::Vector3d& p : mesh.vertices) {
+    p *= 1e-7;
+  }
+  EXPECT_NO_THROW(validate_indexed_mesh(mesh));
+}
+
+TEST(ValidateIndexedMesh, RejectsMeshWithoutVertices) {
+  EXPECT_THAT(validation_message(IndexedMesh{}), HasSubstr("empty mesh"));
+}
+
+TEST(ValidateIndexedMesh, RejectsMeshWithoutFaces) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces.clear();
+  EXPECT_THAT(validation_message(mesh), HasSubstr("empty mesh: it has 5 vertices and 0 faces"));
+}
+
+TEST(ValidateIndexedMesh, RejectsNanCoordinate) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.vertices[2].x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("vertex 2 has a non-finite coordinate (nan, 0, 1)"));
+}
+
+TEST(ValidateIndexedMesh, RejectsInfiniteCoordinate) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.vertices[4].z() = -std::numeric_limits<double>::infinity();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("vertex 4 has a non-finite coordinate (2, 0, -inf)"));
+}
+
+TEST(ValidateIndexedMesh, RejectsFaceWithTwoVertices) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces.push_back({3, 2});
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 2 has 2 vertices, but faces must have 3 or 4 vertices"));
+}
+
+TEST(ValidateIndexedMesh, RejectsPentagon) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces[0] = {0, 1, 4, 2, 3};
+  mesh.faces.pop_back();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 0 has 5 vertices, but faces must have 3 or 4 vertices"));
+}
+
+TEST(ValidateIndexedMesh, RejectsVertexIdOutOfRange) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces[1] = {1, 120, 2};
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 1 refers to vertex 120, but the mesh has 5 vertices"));
+}
+
+TEST(ValidateIndexedMesh, RejectsNegativeVertexId) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces[1] = {1, -1, 2};
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 1 refers to vertex -1, but the mesh has 5 vertices"));
+}
+
+TEST(ValidateIndexedMesh, RejectsRepeatedVertex) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces[0] = {0, 1, 2, 1};
+  EXPECT_THAT(validation_message(mesh), HasSubstr("face 0 repeats vertex 1 (vertices 0 1 2 1)"));
+}
+
+TEST(ValidateIndexedMesh, RejectsZeroAreaFace) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.vertices[4] = {1, 0, 0.5};  // on the segment from vertex 1 to vertex 2
+  EXPECT_THAT(validation_message(mesh), HasSubstr("face 1 (vertices 1 4 2) is degenerate"));
+}
+
+TEST(ValidateIndexedMesh, RejectsNonManifoldEdge) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.vertices.emplace_back(1, 1, 0.5);
+  mesh.faces.push_back({2, 5, 1});
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("non-manifold edge (1, 2) is shared by 3 faces (0, 1, 2)"));
+}
+
+TEST(ValidateIndexedMesh, RejectsInconsistentOrientation) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.faces[1] = {2, 4, 1};
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("inconsistent orientation: faces 0 and 1 both traverse edge (1, 2) in the "
+                        "same direction"));
+}
+
+}  // namespace
+}  // namespace tissu

@@ -1,0 +1,52 @@
+#include "topology/validity.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "cloth_test_support.hpp"
+
+namespace tissu {
+namespace {
+
+using ::testing::Contains;
+using ::testing::HasSubstr;
+
+class ValidityTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    build_cloth_complex(make_grid_mesh(test::grid(3, 3, GridCells::quads)), 0.2,
+                        test::all_springs(), lcc);
+    ASSERT_TRUE(validity_problems(lcc).empty());
+  }
+  ClothComplex lcc;
+};
+
+TEST_F(ValidityTest, ReportsNonPositiveMassAndTheMassBalance) {
+  lcc.vertex_attributes().begin()->info().mass = 0.0;
+  const auto problems = validity_problems(lcc);
+  EXPECT_THAT(problems, Contains(HasSubstr("non-positive mass")));
+  EXPECT_THAT(problems, Contains(HasSubstr("differs from density x rest area")));
+}
+
+TEST_F(ValidityTest, ReportsUnassignedSpringSlots) {
+  lcc.info(lcc.darts().begin()).bending = DartSpring{};
+  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("unassigned bending spring")));
+}
+
+TEST_F(ValidityTest, ReportsTwinDartsThatDisagree) {
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    if (!lcc.is_free<2>(d)) {
+      lcc.info(d).edge.stiffness *= 2.0;
+      break;
+    }
+  }
+  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("disagree")));
+}
+
+TEST_F(ValidityTest, ReportsNonFinitePositions) {
+  lcc.vertex_attributes().begin()->point() = Point3(std::nan(""), 0, 0);
+  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("non-finite")));
+}
+
+}  // namespace
+}  // namespace tissu

@@ -1,0 +1,18 @@
+#pragma once
+/// \file
+/// Marks the particles chosen by pin selectors.
+
+#include "topology/cloth_complex.hpp"
+#include "topology/pin_selection.hpp"
+
+namespace tissu {
+
+/// Pins every particle chosen by one of `selectors` (their union) and returns how many are pinned.
+/// A side is the set of vertices whose coordinate along the frame axis is within 1e-6 of the
+/// cloth's extent from the extreme; a corner is the end of the top or bottom side nearest to the
+/// left or right. Throws PinError ("pins[2]: ...") when a selector selects nothing or an index is
+/// not a vertex of the input.
+int apply_pins(ClothComplex& lcc, const std::vector<PinSelector>& selectors,
+               const ClothFrame& frame);
+
+}  // namespace tissu

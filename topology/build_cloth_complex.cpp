@@ -1,0 +1,43 @@
+#include "topology/build_cloth_complex.hpp"
+
+#include <CGAL/Linear_cell_complex_incremental_builder.h>
+
+#include "topology/cloth_properties.hpp"
+
+namespace tissu {
+
+void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2,
+                         const SpringSettings& springs, ClothComplex& lcc) {
+  // the incremental builder asserts on non-manifold or inconsistently oriented input
+  validate_indexed_mesh(mesh);
+  lcc.clear();
+
+  std::vector<int> builder_id(mesh.vertices.size(), -1);
+  for (const auto& face : mesh.faces) {
+    for (int v : face) builder_id[v] = 0;
+  }
+  CGAL::Linear_cell_complex_incremental_builder_3<ClothComplex> builder(lcc);
+  int next_id = 0;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (builder_id[v] < 0) continue;
+    builder_id[v] = next_id++;
+    const Eigen::Vector3d& p = mesh.vertices[v];
+    Vertex_handle vh = builder.add_vertex(Point3(p.x(), p.y(), p.z()));
+    vh->info().rest_position = vh->point();
+    vh->info().source_index = static_cast<int>(v);
+  }
+  builder.begin_surface();
+  for (const auto& face : mesh.faces) {
+    builder.begin_facet();
+    for (int v : face) builder.add_vertex_to_facet(static_cast<std::size_t>(builder_id[v]));
+    Dart_handle first = builder.end_facet();
+    lcc.set_attribute<2>(first, lcc.create_attribute<2>());
+  }
+  builder.end_surface();
+
+  assign_face_rest(lcc, areal_density_kg_per_m2);
+  lump_masses(lcc);
+  assign_springs(lcc, springs);
+}
+
+}  // namespace tissu

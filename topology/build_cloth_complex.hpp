@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// From an indexed mesh to a cloth complex with rest data, masses and springs.
+
+#include "topology/cloth_complex.hpp"
+#include "topology/indexed_mesh.hpp"
+#include "topology/spring_settings.hpp"
+
+namespace tissu {
+
+/// Replaces `lcc` by the faces of `mesh`, sewn along shared edges. Positions are the mesh's;
+/// material coordinates equal them (the mesh is its own rest shape); velocities are zero. Each
+/// particle keeps its mesh vertex id as source_index; vertices no face uses are left out. Rest
+/// areas, masses and springs are then assigned (see cloth_properties.hpp).
+/// Throws MeshError when validate_indexed_mesh rejects the mesh.
+void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2,
+                         const SpringSettings& springs, ClothComplex& lcc);
+
+}  // namespace tissu

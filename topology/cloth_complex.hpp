@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// The cloth held in a CGAL linear cell complex (dimension 2 in 3D, CGAL 5.5 API): darts carry the
+/// springs, vertices the particles, faces the rest area and material. Heavy header: include it
+/// only from topology/ and lib/ sources.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+
+#include <cstdint>
+
+namespace tissu {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using Vector3 = Kernel::Vector_3;
+
+/// Whether a dart's spring slot has been filled, and with what. Darts that CGAL creates start
+/// unassigned; the code that creates them must assign them.
+enum class SpringSlot : std::uint8_t { unassigned, absent, present };
+
+/// One spring as stored on a dart; both darts that hold the same spring agree.
+struct DartSpring {
+  SpringSlot slot = SpringSlot::unassigned;
+  double stiffness = 0.0;    ///< k (N/m)
+  double damping = 0.0;      ///< nu (N s/m)
+  double rest_length = 0.0;  ///< l0 (m), measured between material coordinates
+};
+
+/// Mechanical attributes of a dart (a half-edge of one face).
+struct DartMechanics {
+  DartSpring edge;     ///< structural spring along the dart's edge
+  DartSpring bending;  ///< spring across the dart's edge, between the vertices that follow the
+                       ///< edge in its two faces (the hinge's apices for triangles)
+  DartSpring shear;    ///< quads only: diagonal from the dart's origin to the opposite corner
+};
+
+/// The particle carried by a vertex; the vertex point is its current position (m).
+struct Particle {
+  Vector3 velocity = CGAL::NULL_VECTOR;  ///< (m/s)
+  double mass = 0.0;                     ///< lumped mass (kg)
+  Point3 rest_position = CGAL::ORIGIN;   ///< material coordinates (m)
+  bool pinned = false;                   ///< motion prescribed (velocity kept)
+  int source_index = -1;                 ///< index in the input grid or mesh, -1 if created
+  int particle_index = -1;               ///< index in the last compiled SpringModel
+};
+
+/// Rest data of a face.
+struct FaceRest {
+  double rest_area = 0.0;      ///< area in material coordinates (m^2)
+  double areal_density = 0.0;  ///< mass per rest area (kg/m^2)
+};
+
+struct ClothItems {
+  template <class Refs>
+  struct Dart_wrapper {
+    using Dart_info = DartMechanics;
+    using Vertex_attribute = CGAL::Cell_attribute_with_point<Refs, Particle>;
+    using Face_attribute = CGAL::Cell_attribute<Refs, FaceRest>;
+    using Attributes = std::tuple<Vertex_attribute, void, Face_attribute>;
+  };
+};
+
+using ClothTraits = CGAL::Linear_cell_complex_traits<3, Kernel>;
+using ClothComplex = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3, ClothTraits, ClothItems>;
+using Dart_handle = ClothComplex::Dart_handle;
+using Dart_const_handle = ClothComplex::Dart_const_handle;
+using Vertex_handle = ClothComplex::Vertex_attribute_handle;
+using Face_handle = ClothComplex::Attribute_handle<2>::type;
+
+}  // namespace tissu

@@ -1,0 +1,115 @@
+#include "topology/compile.hpp"
+
+namespace tissu {
+namespace {
+
+struct SpringRecord {
+  int i, j;
+  const DartSpring* spring;
+  SpringKind kind;
+  Dart_handle dart;
+};
+
+int particle_of(const ClothComplex& lcc, Dart_const_handle dart) {
+  return lcc.vertex_attribute(dart)->info().particle_index;
+}
+
+std::vector<SpringRecord> collect_springs(ClothComplex& lcc) {
+  std::vector<SpringRecord> records;
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    const DartMechanics& m = lcc.info(d);
+    if (m.edge.slot == SpringSlot::present) {
+      records.push_back(
+          {particle_of(lcc, d), particle_of(lcc, lcc.next(d)), &m.edge, SpringKind::structural, d});
+    }
+    if (m.bending.slot == SpringSlot::present) {
+      const int here = particle_of(lcc, lcc.next(lcc.next(d)));
+      const int across = particle_of(lcc, lcc.next(lcc.next(lcc.opposite<2>(d))));
+      records.push_back({here, across, &m.bending, SpringKind::bending, d});
+    }
+  }
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    if (lcc.darts_of_orbit<1>(d).size() != 4) continue;
+    for (Dart_handle corner : {Dart_handle(d), lcc.next(d)}) {
+      const DartMechanics& m = lcc.info(corner);
+      if (m.shear.slot != SpringSlot::present) continue;
+      records.push_back({particle_of(lcc, corner), particle_of(lcc, lcc.next(lcc.next(corner))),
+                         &m.shear, SpringKind::shear, corner});
+    }
+  }
+  return records;
+}
+
+Eigen::MatrixX3i collect_triangles(ClothComplex& lcc) {
+  std::vector<Eigen::Vector3i> triangles;
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    const int first = particle_of(lcc, d);
+    Dart_handle a = lcc.next(d);
+    for (Dart_handle b = lcc.next(a); b != Dart_handle(d); a = b, b = lcc.next(b)) {
+      triangles.emplace_back(first, particle_of(lcc, a), particle_of(lcc, b));
+    }
+  }
+  Eigen::MatrixX3i result(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) result.row(t) = triangles[t].transpose();
+  return result;
+}
+
+}  // namespace
+
+CompiledCloth compile(ClothComplex& lcc, double time_s) {
+  CompiledCloth out;
+  SpringModel& model = out.model;
+  const auto particle_count = static_cast<Eigen::Index>(lcc.vertex_attributes().size());
+  model.mass.resize(particle_count);
+  model.pinned.assign(particle_count, 0);
+  out.state.x.resize(3 * particle_count);
+  out.state.v.resize(3 * particle_count);
+  out.state.time = time_s;
+  out.particle_vertices.reserve(particle_count);
+
+  int index = 0;
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v, ++index) {
+    Particle& p = v->info();
+    p.particle_index = index;
+    out.particle_vertices.push_back(v);
+    model.mass[index] = p.mass;
+    model.pinned[index] = p.pinned ? 1 : 0;
+    const Point3& x = v->point();
+    out.state.x.segment<3>(3 * index) << x.x(), x.y(), x.z();
+    out.state.v.segment<3>(3 * index) << p.velocity.x(), p.velocity.y(), p.velocity.z();
+  }
+
+  const std::vector<SpringRecord> records = collect_springs(lcc);
+  const auto spring_count = static_cast<Eigen::Index>(records.size());
+  model.springs.resize(spring_count, 2);
+  model.rest_length.resize(spring_count);
+  model.stiffness.resize(spring_count);
+  model.damping.resize(spring_count);
+  model.kind.resize(spring_count);
+  out.spring_darts.reserve(spring_count);
+  for (Eigen::Index s = 0; s < spring_count; ++s) {
+    const SpringRecord& r = records[s];
+    model.springs(s, 0) = r.i;
+    model.springs(s, 1) = r.j;
+    model.rest_length[s] = r.spring->rest_length;
+    model.stiffness[s] = r.spring->stiffness;
+    model.damping[s] = r.spring->damping;
+    model.kind[s] = r.kind;
+    out.spring_darts.push_back(r.dart);
+  }
+  model.triangles = collect_triangles(lcc);
+  finalize_model(model);
+  return out;
+}
+
+void write_back(const CompiledCloth& compiled, const State& state, ClothComplex& lcc) {
+  for (std::size_t i = 0; i < compiled.particle_vertices.size(); ++i) {
+    const Vertex_handle v = compiled.particle_vertices[i];
+    const auto x = state.x.segment<3>(3 * i);
+    const auto vel = state.v.segment<3>(3 * i);
+    lcc.point_of_vertex_attribute(v) = Point3(x[0], x[1], x[2]);
+    lcc.info_of_attribute<0>(v).velocity = Vector3(vel[0], vel[1], vel[2]);
+  }
+}
+
+}  // namespace tissu

@@ -1,0 +1,21 @@
+#include "topology/current_mesh.hpp"
+
+namespace tissu {
+
+IndexedMesh current_mesh(const ClothComplex& lcc) {
+  IndexedMesh mesh;
+  mesh.vertices.resize(lcc.vertex_attributes().size());
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& p = v->point();
+    mesh.vertices.at(v->info().particle_index) = Eigen::Vector3d(p.x(), p.y(), p.z());
+  }
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    std::vector<int>& face = mesh.faces.emplace_back();
+    for (auto c = lcc.darts_of_orbit<1>(d).begin(); c != lcc.darts_of_orbit<1>(d).end(); ++c) {
+      face.push_back(lcc.vertex_attribute(c)->info().particle_index);
+    }
+  }
+  return mesh;
+}
+
+}  // namespace tissu

@@ -1,0 +1,172 @@
+#include "topology/indexed_mesh.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace tissu {
+namespace {
+
+/// One face's traversal of an edge, keyed by its vertex ids in increasing order.
+struct HalfEdge {
+  int low;       ///< smaller vertex id
+  int high;      ///< larger vertex id
+  int face;      ///< face that traverses the edge
+  bool forward;  ///< true if the face goes from `low` to `high`
+};
+
+[[noreturn]] void fail(const std::ostringstream& message) {
+  throw MeshError(message.str());
+}
+
+/// Faces must be non-empty; their vertices finite.
+void check_not_empty_and_finite(const IndexedMesh& mesh) {
+  if (mesh.vertices.empty() || mesh.faces.empty()) {
+    std::ostringstream message;
+    message << "empty mesh: it has " << mesh.vertices.size() << " vertices and "
+            << mesh.faces.size() << " faces, but a cloth needs at least one face";
+    fail(message);
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Eigen::Vector3d& p = mesh.vertices[v];
+    if (!p.allFinite()) {
+      std::ostringstream message;
+      message << "vertex " << v << " has a non-finite coordinate (" << p.x() << ", " << p.y()
+              << ", " << p.z() << ")";
+      fail(message);
+    }
+  }
+}
+
+/// Squared diagonal of the axis-aligned bounding box of all vertices.
+double bounding_box_diagonal_squared(const IndexedMesh& mesh) {
+  Eigen::Vector3d lo = mesh.vertices.front();
+  Eigen::Vector3d hi = lo;
+  for (const Eigen::Vector3d& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).squaredNorm();
+}
+
+/// Area of a polygon: half the norm of its vector area (exact for planar faces).
+double polygon_area(const IndexedMesh& mesh, const std::vector<int>& face) {
+  Eigen::Vector3d twice_vector_area = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d& origin = mesh.vertices[face[0]];
+  for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+    twice_vector_area +=
+        (mesh.vertices[face[i]] - origin).cross(mesh.vertices[face[i + 1]] - origin);
+  }
+  return 0.5 * twice_vector_area.norm();
+}
+
+std::string face_ids(const std::vector<int>& face) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < face.size(); ++i) {
+    out << (i == 0 ? "" : " ") << face[i];
+  }
+  return out.str();
+}
+
+/// Face size, vertex ids in range and distinct, non-zero area.
+void check_face(const IndexedMesh& mesh, std::size_t f, double min_area) {
+  const std::vector<int>& face = mesh.faces[f];
+  if (face.size() < 3 || face.size() > 4) {
+    std::ostringstream message;
+    message << "face " << f << " has " << face.size()
+            << " vertices, but faces must have 3 or 4 vertices";
+    fail(message);
+  }
+  for (int v : face) {
+    if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size()) {
+      std::ostringstream message;
+      message << "face " << f << " refers to vertex " << v << ", but the mesh has "
+              << mesh.vertices.size() << " vertices";
+      fail(message);
+    }
+  }
+  for (std::size_t i = 0; i < face.size(); ++i) {
+    for (std::size_t j = i + 1; j < face.size(); ++j) {
+      if (face[i] == face[j]) {
+        std::ostringstream message;
+        message << "face " << f << " repeats vertex " << face[i] << " (vertices " << face_ids(face)
+                << "), but a face's vertices must be distinct";
+        fail(message);
+      }
+    }
+  }
+  const double area = polygon_area(mesh, face);
+  if (!(area > min_area)) {
+    std::ostringstream message;
+    message << "face " << f << " (vertices " << face_ids(face) << ") is degenerate: its area "
+            << area << " is below " << min_area;
+    fail(message);
+  }
+}
+
+/// Every edge shared by at most two faces, which traverse it in opposite directions.
+void check_edges(const IndexedMesh& mesh) {
+  std::size_t count = 0;
+  for (const std::vector<int>& face : mesh.faces) {
+    count += face.size();
+  }
+  std::vector<HalfEdge> half_edges;
+  half_edges.reserve(count);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const int a = face[i];
+      const int b = face[(i + 1) % face.size()];
+      half_edges.push_back({std::min(a, b), std::max(a, b), static_cast<int>(f), a < b});
+    }
+  }
+  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.low, x.high, x.face) < std::tie(y.low, y.high, y.face);
+  });
+  for (std::size_t begin = 0; begin < half_edges.size();) {
+    std::size_t end = begin + 1;
+    while (end < half_edges.size() && half_edges[end].low == half_edges[begin].low &&
+           half_edges[end].high == half_edges[begin].high) {
+      ++end;
+    }
+    const HalfEdge& first = half_edges[begin];
+    if (end - begin > 2) {
+      std::ostringstream message;
+      message << "non-manifold edge (" << first.low << ", " << first.high << ") is shared by "
+              << end - begin << " faces (";
+      for (std::size_t i = begin; i < end; ++i) {
+        message << (i == begin ? "" : ", ") << half_edges[i].face;
+      }
+      message << "), but at most two faces may share an edge";
+      fail(message);
+    }
+    if (end - begin == 2 && half_edges[begin + 1].forward == first.forward) {
+      std::ostringstream message;
+      message << "inconsistent orientation: faces " << first.face << " and "
+              << half_edges[begin + 1].face << " both traverse edge (" << first.low << ", "
+              << first.high << ") in the same direction, but neighbouring faces must traverse "
+              << "their shared edge in opposite directions";
+      fail(message);
+    }
+    begin = end;
+  }
+}
+
+}  // namespace
+
+void validate_indexed_mesh(const IndexedMesh& mesh) {
+  check_not_empty_and_finite(mesh);
+  const double min_area = 1e-12 * bounding_box_diagonal_squared(mesh);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    check_face(mesh, f, min_area);
+  }
+  check_edges(mesh);
+}
+
+}  // namespace tissu

@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// Which particles are pinned: selectors over the cloth's material coordinates. CGAL-free.
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace tissu {
+
+/// The in-plane frame in which a cloth's sides are named: left/right along u, bottom/top along v.
+struct ClothFrame {
+  Eigen::Vector3d u_axis{1.0, 0.0, 0.0};  ///< unit
+  Eigen::Vector3d v_axis{0.0, 0.0, 1.0};  ///< unit
+};
+
+enum class Side { left, right, bottom, top };
+enum class Corner { bottom_left, bottom_right, top_left, top_right };
+
+/// One way of choosing particles, by material coordinates or input vertex ids.
+struct PinSelector {
+  enum class Kind { corners, side, indices, box };
+  Kind kind = Kind::side;
+  std::vector<Corner> corners;  ///< kind == corners
+  Side side = Side::top;        ///< kind == side: vertices on that side, ordered along it ...
+  int every = 1;                ///< ... keeping every n-th one and always both ends
+  std::vector<int> indices;     ///< kind == indices: input mesh (or grid) vertex ids
+  Eigen::AlignedBox3d box;      ///< kind == box: material coordinates inside it (m)
+};
+
+/// Thrown when a selector selects nothing or names a vertex that does not exist; the message
+/// names the selector by its position.
+class PinError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace tissu
