@@ -6,6 +6,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   libcgal-dev libeigen3-dev libassimp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libosmesa6-dev libstb-dev ffmpeg
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -2,7 +2,10 @@
 
 #include <CGAL/Linear_cell_complex_incremental_builder.h>
 
+#include <cassert>
+
 #include "topology/cloth_properties.hpp"
+#include "topology/validity.hpp"
 
 namespace tissu {
 
@@ -38,6 +41,7 @@ void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2
   assign_face_rest(lcc, areal_density_kg_per_m2);
   lump_masses(lcc);
   assign_springs(lcc, springs);
+  assert(is_valid_cloth(lcc));
 }
 
 }  // namespace tissu

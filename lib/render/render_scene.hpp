@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// What one rendered frame shows: the cloth's current mesh and what is drawn on and around it.
+/// CGAL-free: the driver fills it from the cloth complex (or from a saved frame mesh).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "topology/indexed_mesh.hpp"
+
+namespace tissu {
+
+/// One frame's content. Simple obstacles (spheres, boxes) are not drawn yet; they will join this
+/// struct as a list of shapes when the scenario has them.
+struct RenderScene {
+  const IndexedMesh* mesh = nullptr;  ///< the cloth, not owned: #V positions (m), faces of 3 or 4
+  std::vector<std::uint8_t> pinned;   ///< #V, non-zero for a pinned particle; empty: none pinned
+  /// #F, the strain of each face for ColorMode::strain: (current area or edge length) / rest - 1,
+  /// so 0 is at rest and 0.1 is 10 % stretched; empty: all zero.
+  std::vector<float> face_strain;
+  std::optional<double> ground_height_m;  ///< height (z, m) of a horizontal ground plane, if any
+};
+
+}  // namespace tissu

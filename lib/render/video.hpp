@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// Encoding a folder of PNG frames into an MP4 and a GIF with the ffmpeg program, when there is
+/// one. Video is a bonus: a missing or failing ffmpeg gives a warning, never an exception.
+
+#include <filesystem>
+#include <string>
+
+namespace tissu {
+
+struct VideoResult {
+  bool made = false;    ///< every requested file was written
+  std::string warning;  ///< one line saying what was not made and why; empty when made
+};
+
+/// Encodes `frames_dir`/frame_00000.png, frame_00001.png, ... shown at `frame_rate` frames per
+/// second into `mp4` (H.264, yuv420p, so any player reads it) and `gif` (at most 320 pixels
+/// wide, at most 15 frames per second, own palette, looping forever), running the first `ffmpeg`
+/// found on the PATH with stdin from /dev/null. An empty path skips that file. Without ffmpeg,
+/// without frame_00000.png, or when ffmpeg fails, returns made = false and a warning (naming the
+/// end of ffmpeg's error output when it failed). Throws std::invalid_argument only for a frame
+/// rate that is not positive.
+VideoResult encode_video(const std::filesystem::path& frames_dir, double frame_rate,
+                         const std::filesystem::path& mp4, const std::filesystem::path& gif);
+
+}  // namespace tissu

@@ -1,0 +1,118 @@
+#include "lib/render/video.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "lib/render/image.hpp"
+
+namespace tissu {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+/// A fresh directory for the running test.
+fs::path test_dir() {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(::testing::TempDir()) / "tissu_video" / info->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Writes `count` 64 x 48 frames of a square moving right into `dir`.
+void write_frames(const fs::path& dir, int count) {
+  for (int frame = 0; frame < count; ++frame) {
+    Image image{64, 48, std::vector<std::uint8_t>(64 * 48 * 3, 230)};
+    for (int y = 16; y < 32; ++y)
+      for (int x = 4 * frame; x < 4 * frame + 16; ++x) {
+        std::uint8_t* p = image.rgb.data() + 3 * (y * 64 + x);
+        p[0] = 200, p[1] = 40, p[2] = 30;
+      }
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+    write_png(dir / name, image);
+  }
+}
+
+/// Sets PATH for the lifetime of the object, then restores it.
+class ScopedPath {
+ public:
+  explicit ScopedPath(const std::string& path) {
+    if (const char* old = std::getenv("PATH")) m_old = old;
+    setenv("PATH", path.c_str(), 1);
+  }
+  ~ScopedPath() {
+    if (m_old)
+      setenv("PATH", m_old->c_str(), 1);
+    else
+      unsetenv("PATH");
+  }
+
+ private:
+  std::optional<std::string> m_old;
+};
+
+bool ffmpeg_installed() {
+  return std::system("command -v ffmpeg > /dev/null 2>&1") == 0;
+}
+
+TEST(EncodeVideo, MakesAnMp4AndAGifFromTenFrames) {
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = test_dir();
+  write_frames(dir, 10);
+  const VideoResult result = encode_video(dir, 10.0, dir / "clip.mp4", dir / "clip.gif");
+  EXPECT_TRUE(result.made) << result.warning;
+  EXPECT_EQ(result.warning, "");
+  ASSERT_TRUE(fs::exists(dir / "clip.mp4"));
+  ASSERT_TRUE(fs::exists(dir / "clip.gif"));
+  EXPECT_GT(fs::file_size(dir / "clip.mp4"), 500u);
+  EXPECT_GT(fs::file_size(dir / "clip.gif"), 500u);
+}
+
+TEST(EncodeVideo, WarnsWithoutThrowingWhenFfmpegIsNotOnThePath) {
+  const fs::path dir = test_dir();
+  write_frames(dir, 2);
+  fs::create_directories(dir / "empty_bin");
+  VideoResult result;
+  {
+    const ScopedPath path((dir / "empty_bin").string());
+    EXPECT_NO_THROW(result = encode_video(dir, 25.0, dir / "clip.mp4", dir / "clip.gif"));
+  }
+  EXPECT_FALSE(result.made);
+  EXPECT_THAT(result.warning,
+              HasSubstr("ffmpeg not found on PATH: no video made; frames are in " + dir.string()));
+  EXPECT_FALSE(fs::exists(dir / "clip.mp4"));
+}
+
+TEST(EncodeVideo, WarnsWhenThereAreNoFrames) {
+  const fs::path dir = test_dir();
+  const VideoResult result = encode_video(dir, 25.0, dir / "clip.mp4", dir / "clip.gif");
+  EXPECT_FALSE(result.made);
+  EXPECT_FALSE(result.warning.empty());
+}
+
+TEST(EncodeVideo, ReportsTheErrorOutputOfAFailingFfmpeg) {
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = test_dir();
+  write_frames(dir, 3);
+  // a folder cannot be written as a file
+  fs::create_directories(dir / "taken.mp4");
+  const VideoResult result = encode_video(dir, 25.0, dir / "taken.mp4", "");
+  EXPECT_FALSE(result.made);
+  EXPECT_THAT(result.warning, HasSubstr("ffmpeg failed to make the MP4"));
+  EXPECT_THAT(result.warning, HasSubstr("exit status"));
+}
+
+TEST(EncodeVideo, RejectsANonPositiveFrameRate) {
+  EXPECT_THROW(encode_video(test_dir(), 0.0, "a.mp4", "a.gif"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tissu
