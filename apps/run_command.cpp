@@ -26,15 +26,22 @@ int execute(const RunCommand& command) {
     options.output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                                     : std::filesystem::path(command.output_dir);
     options.frames = command.frames;
-    if (!command.quiet) options.on_frame = stderr_progress();
+    ProgressReporter progress = stderr_progress();
+    if (!command.quiet) {
+      options.on_frame = [&progress](const FrameStats& row) { progress(row); };
+      options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
+    }
     const RunResult result = run_scenario(scenario, options);
+    if (!result.video_warning.empty()) {
+      std::fprintf(stderr, "tissu: warning: %s\n", result.video_warning.c_str());
+    }
     if (!result.ok) {
       std::fprintf(stderr, "tissu: simulation failed at %s\n", result.failure.c_str());
       return 2;
     }
     if (!command.quiet) {
-      std::fprintf(stderr, "tissu: %d frames written to %s\n", result.frames_done,
-                   options.output_dir.c_str());
+      std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,
+                   result.images, options.output_dir.c_str());
     }
     return 0;
   } catch (const ScenarioError& e) {

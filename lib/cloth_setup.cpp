@@ -11,6 +11,9 @@ void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
   const IndexedMesh mesh = scenario.cloth.grid ? make_grid_mesh(*scenario.cloth.grid)
                                                : read_mesh(scenario.cloth.mesh_file);
   build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
+  if (scenario.cloth.grid && scenario.cloth.grid->pleats > 0) {
+    place_particles(grid_initial_positions(*scenario.cloth.grid), lcc);
+  }
   try {
     apply_pins(lcc, scenario.pins, scenario.cloth.frame);
   } catch (const PinError& e) {

@@ -6,10 +6,12 @@
 #include <cstdio>
 
 #include "lib/cloth_setup.hpp"
+#include "lib/render_frames.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
 #include "topology/compile.hpp"
 #include "topology/current_mesh.hpp"
+#include "topology/face_strain.hpp"
 
 namespace tissu {
 namespace {
@@ -41,6 +43,15 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   return s;
 }
 
+RenderFrame snapshot(const ClothComplex& lcc) {
+  RenderFrame frame{current_mesh(lcc), {}, face_edge_strain(lcc)};
+  frame.pinned.resize(frame.mesh.vertices.size());
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    frame.pinned[v->info().particle_index] = v->info().pinned ? 1 : 0;
+  }
+  return frame;
+}
+
 }  // namespace
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
@@ -54,6 +65,17 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   CompiledCloth cloth = compile(lcc);
   StatsCsv stats(options.output_dir / "stats.csv");
 
+  const RenderSettings& render = scenario.render;
+  std::vector<RenderFrame> to_render;
+  auto render_recorded = [&](RunResult& result) {
+    if (to_render.empty()) return;
+    const RenderedRun rendered =
+        render_frames(to_render, render, scenario.frame_rate / render.every, options.output_dir,
+                      scenario.name, options.on_image);
+    result.images = rendered.images;
+    result.video_warning = rendered.video_warning;
+  };
+
   auto record = [&](int frame, double step_ms, int unconverged) {
     const FrameStats row =
         measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
@@ -62,6 +84,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
                  current_mesh(lcc), output.mesh_format);
     }
+    if (render.enabled && frame % render.every == 0) to_render.push_back(snapshot(lcc));
     if (options.on_frame) options.on_frame(row);
   };
   record(0, 0.0, 0);
@@ -89,6 +112,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
                          " s is likely too large for the stiffness (more substeps or the "
                          "implicit_euler integrator help); last good state written to " +
                          last_good.string();
+        render_recorded(result);
         return result;
       }
     }
@@ -99,6 +123,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     record(frame, step_ms, unconverged);
     result.frames_done = frame;
   }
+  render_recorded(result);
   return result;
 }
 

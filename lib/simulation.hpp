@@ -17,16 +17,21 @@ struct RunOptions {
   std::filesystem::path output_dir = "out";  ///< created if missing; files in it are overwritten
   std::optional<int> frames;                 ///< overrides the scenario's frame count
   std::function<void(const FrameStats&)> on_frame;  ///< called after each frame, e.g. progress
+  std::function<void(int, int)> on_image;  ///< called with (done, total) after each rendered image
 };
 
 struct RunResult {
   int frames_done = 0;  ///< frames completed after frame 0
   bool ok = true;
-  std::string failure;  ///< when !ok: the frame, the cause and where the last good state is
+  std::string failure;        ///< when !ok: the frame, the cause and where the last good state is
+  int images = 0;             ///< PNG frames rendered
+  std::string video_warning;  ///< set when a video was asked for and not made
 };
 
 /// Runs `scenario`. Bad meshes or pins throw (MeshError, PinError) before the first step; a solver
-/// failure stops the run with ok = false after writing the last good state.
+/// failure stops the run with ok = false after writing the last good state. When rendering is on,
+/// the frames are kept in memory and rendered after the run (a failed one too), so that the
+/// default camera frames the whole run.
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
 
 }  // namespace tissu

@@ -44,4 +44,16 @@ void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2
   assert(is_valid_cloth(lcc));
 }
 
+void place_particles(const std::vector<Eigen::Vector3d>& positions, ClothComplex& lcc) {
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const auto source = static_cast<std::size_t>(v->info().source_index);
+    if (source >= positions.size()) {
+      throw std::invalid_argument("place_particles: no position for input vertex " +
+                                  std::to_string(source));
+    }
+    const Eigen::Vector3d& p = positions[source];
+    lcc.point_of_vertex_attribute(v) = Point3(p.x(), p.y(), p.z());
+  }
+}
+
 }  // namespace tissu

@@ -16,4 +16,8 @@ namespace tissu {
 void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2,
                          const SpringSettings& springs, ClothComplex& lcc);
 
+/// Moves every particle to positions[its source_index] (m), leaving the rest shape as it is.
+/// Throws std::invalid_argument when `positions` has fewer entries than the input had vertices.
+void place_particles(const std::vector<Eigen::Vector3d>& positions, ClothComplex& lcc);
+
 }  // namespace tissu

@@ -11,4 +11,9 @@ namespace tissu {
 /// non-positive sizes or cell counts, or axes that are not orthonormal.
 IndexedMesh make_grid_mesh(const GridOptions& options);
 
+/// Initial positions of the grid's vertices: the rest positions, or, with options.pleats > 0,
+/// the cloth gathered into that many sine-shaped pleats across gathered_width, the amplitude
+/// chosen so that the pleated width has the cloth's full arc length.
+std::vector<Eigen::Vector3d> grid_initial_positions(const GridOptions& options);
+
 }  // namespace tissu

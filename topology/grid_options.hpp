@@ -28,6 +28,10 @@ struct GridOptions {
   int cells_u = 16;                                  ///< cells along u
   int cells_v = 16;                                  ///< cells along v
   GridCells cells = GridCells::triangles;
+  /// Start gathered into this many pleats along u (a curtain on its rail); 0 starts flat. The
+  /// rest shape stays flat either way.
+  int pleats = 0;
+  double gathered_width = 0.0;  ///< width along u the pleats gather the cloth into (m), < width
   DiagonalPattern diagonal = DiagonalPattern::alternating;  ///< triangles only
 };
 

@@ -2,6 +2,7 @@
 #include <sstream>
 
 #include "lib/scenario/read_cloth.hpp"
+#include "lib/scenario/read_render.hpp"
 
 namespace tissu {
 namespace {
@@ -122,6 +123,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
   if (top.has("output")) read_output(top.object("output"), s.output);
+  if (top.has("render")) s.render = read_render(top.object("render"));
   top.finish();
   return s;
 }

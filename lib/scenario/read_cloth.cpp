@@ -23,6 +23,13 @@ GridOptions read_grid(JsonObjectReader grid) {
   o.diagonal = diagonal == "forward"    ? DiagonalPattern::forward
                : diagonal == "backward" ? DiagonalPattern::backward
                                         : DiagonalPattern::alternating;
+  if (grid.has("pleats")) {
+    JsonObjectReader pleats = grid.object("pleats");
+    o.pleats = pleats.integer("count", 1, std::max(1, o.cells_u / 2));
+    o.gathered_width = pleats.number(
+        "gathered_width", {0.0, o.width * (1.0 - 1e-6), true, "a width (m) in (0, size[0])"});
+    pleats.finish();
+  }
   o.origin = grid.vector3_or("origin", o.origin);
   o.u_axis = grid.direction_or("u_axis", o.u_axis);
   o.v_axis = grid.direction_or("v_axis", o.v_axis);

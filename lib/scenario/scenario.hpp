@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "lib/mesh_io/write_mesh.hpp"
+#include "lib/render/camera.hpp"
+#include "lib/render/render_options.hpp"
 #include "solver/solver_params.hpp"
 #include "topology/grid_options.hpp"
 #include "topology/pin_selection.hpp"
@@ -29,6 +31,15 @@ struct OutputOptions {
   int mesh_every = 1;  ///< write every n-th frame's mesh (frame 0 always)
 };
 
+/// Images of the run, rendered after it with one camera for all frames.
+struct RenderSettings {
+  bool enabled = false;          ///< write PNG frames (and a video)
+  RenderOptions options;         ///< image size, wireframe, colours
+  std::optional<Camera> camera;  ///< unset: frames the cloth's bounding box over the whole run
+  int every = 1;                 ///< render every n-th frame; image k shows frame k n
+  bool video = true;             ///< <name>.mp4 and <name>.gif when ffmpeg is on the PATH
+};
+
 struct Scenario {
   std::string name;            ///< defaults to the file's stem
   std::filesystem::path file;  ///< the scenario file, for messages
@@ -42,6 +53,7 @@ struct Scenario {
   int substeps = 1;          ///< solver steps per frame
   int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default
   OutputOptions output;
+  RenderSettings render;
 };
 
 /// Reads, validates and returns the scenario in `file`. Each "key.path=value" of `overrides` is

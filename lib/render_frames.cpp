@@ -1,0 +1,54 @@
+#include "lib/render_frames.hpp"
+
+#include <cstdio>
+
+#include "lib/render/image.hpp"
+#include "lib/render/renderer.hpp"
+#include "lib/render/video.hpp"
+
+namespace tissu {
+namespace {
+
+Eigen::AlignedBox3d bounds_of(const std::vector<RenderFrame>& frames) {
+  Eigen::AlignedBox3d box;
+  for (const RenderFrame& frame : frames) {
+    for (const Eigen::Vector3d& p : frame.mesh.vertices) box.extend(p);
+  }
+  return box;
+}
+
+}  // namespace
+
+RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
+                          double images_per_second, const std::filesystem::path& output_dir,
+                          const std::string& video_stem,
+                          const std::function<void(int, int)>& on_image) {
+  RenderedRun run;
+  if (frames.empty()) return run;
+  const RenderOptions& options = settings.options;
+  const double aspect = double(options.width) / options.height;
+  const Camera camera = settings.camera.value_or(framing_camera(bounds_of(frames), aspect));
+  Renderer renderer(options);
+  const int total = static_cast<int>(frames.size());
+  for (int k = 0; k < total; ++k) {
+    RenderScene scene;
+    scene.mesh = &frames[k].mesh;
+    scene.pinned = frames[k].pinned;
+    scene.face_strain = frames[k].face_strain;
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", k);
+    write_png(output_dir / name, renderer.render(scene, camera));
+    run.images = k + 1;
+    if (on_image) on_image(k + 1, total);
+  }
+  if (settings.video) {
+    const VideoResult video =
+        encode_video(output_dir, images_per_second, output_dir / (video_stem + ".mp4"),
+                     output_dir / (video_stem + ".gif"));
+    run.video = video.made;
+    run.video_warning = video.warning;
+  }
+  return run;
+}
+
+}  // namespace tissu

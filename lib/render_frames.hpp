@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// Renders the frames of a run to PNG files with one camera, then a video. CGAL-free.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lib/scenario/scenario.hpp"
+#include "topology/indexed_mesh.hpp"
+
+namespace tissu {
+
+/// What one image shows.
+struct RenderFrame {
+  IndexedMesh mesh;                  ///< the cloth's surface
+  std::vector<std::uint8_t> pinned;  ///< #V, 1 for pinned particles; may be empty
+  std::vector<float> face_strain;    ///< #F mean edge strain; may be empty (dimensionless)
+};
+
+struct RenderedRun {
+  int images = 0;             ///< PNG files written: frame_00000.png ...
+  bool video = false;         ///< whether the MP4 and GIF were made
+  std::string video_warning;  ///< why not, when video was asked for but not made
+};
+
+/// Writes frames[k] to output_dir/frame_k.png (5 digits) with settings.camera, or a camera that
+/// frames the bounding box of every frame, then, if settings.video, output_dir/<video_stem>.mp4
+/// and .gif at `images_per_second`. Calls on_image(done, total) after each image.
+RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
+                          double images_per_second, const std::filesystem::path& output_dir,
+                          const std::string& video_stem,
+                          const std::function<void(int, int)>& on_image = {});
+
+}  // namespace tissu

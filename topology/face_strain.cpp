@@ -1,0 +1,26 @@
+#include "topology/face_strain.hpp"
+
+#include <cmath>
+
+namespace tissu {
+
+std::vector<float> face_edge_strain(const ClothComplex& lcc) {
+  std::vector<float> strain;
+  strain.reserve(lcc.attributes<2>().size());
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    double sum = 0.0;
+    int edges = 0;
+    for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
+      const auto a = lcc.vertex_attribute(e), b = lcc.vertex_attribute(lcc.next(e));
+      const double rest_m =
+          std::sqrt(CGAL::squared_distance(a->info().rest_position, b->info().rest_position));
+      const double now_m = std::sqrt(CGAL::squared_distance(a->point(), b->point()));
+      sum += now_m / rest_m - 1.0;
+      ++edges;
+    }
+    strain.push_back(static_cast<float>(sum / edges));
+  }
+  return strain;
+}
+
+}  // namespace tissu
