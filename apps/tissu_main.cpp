@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
 
 int main(int argc, char** argv) {
@@ -15,6 +16,11 @@ int main(int argc, char** argv) {
       ->required();
   tissu::add_run_options(*run_app, run);
 
+  tissu::RenderCommand render;
+  CLI::App* render_app =
+      app.add_subcommand("render", "re-render a folder of saved frame meshes, without simulating");
+  tissu::add_render_options(*render_app, render);
+
   CLI11_PARSE(app, argc, argv);
-  return tissu::execute(run);
+  return run_app->parsed() ? tissu::execute(run) : tissu::execute(render);
 }

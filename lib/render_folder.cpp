@@ -1,0 +1,44 @@
+#include "lib/render_folder.hpp"
+
+#include <algorithm>
+#include <regex>
+
+#include "lib/mesh_io/read_mesh.hpp"
+
+namespace tissu {
+
+std::vector<std::filesystem::path> frame_mesh_files(const std::filesystem::path& mesh_dir) {
+  if (!std::filesystem::is_directory(mesh_dir)) {
+    throw std::runtime_error(mesh_dir.string() + ": not a folder");
+  }
+  static const std::regex frame_name(R"(frame_\d{5,}\.(obj|ply))");
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(mesh_dir)) {
+    if (std::regex_match(entry.path().filename().string(), frame_name)) {
+      files.push_back(entry.path());
+    }
+  }
+  if (files.empty()) {
+    throw std::runtime_error(mesh_dir.string() +
+                             ": no frame meshes (frame_NNNNN.obj or frame_NNNNN.ply) to render");
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+RenderedRun render_mesh_folder(const std::filesystem::path& mesh_dir,
+                               const RenderSettings& settings, double images_per_second,
+                               const std::filesystem::path& output_dir,
+                               const std::function<void(int, int)>& on_image) {
+  std::vector<RenderFrame> frames;
+  for (const std::filesystem::path& file : frame_mesh_files(mesh_dir)) {
+    frames.push_back(RenderFrame{read_mesh(file), {}, {}});
+  }
+  std::filesystem::create_directories(output_dir);
+  const std::string stem =
+      std::filesystem::absolute(mesh_dir).lexically_normal().filename().string();
+  return render_frames(frames, settings, images_per_second, output_dir,
+                       stem.empty() ? "frames" : stem, on_image);
+}
+
+}  // namespace tissu
