@@ -55,30 +55,46 @@ Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart) {
   return lcc.vertex_attribute(lcc.next(lcc.next(dart)));
 }
 
-void assign_springs(ClothComplex& lcc, const SpringSettings& settings) {
-  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    DartMechanics& mechanics = lcc.info(d);
-    mechanics.edge = make_spring(
-        settings.structural, rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(d))));
+void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
+  DartMechanics& mechanics = lcc.info(d);
+  mechanics.edge = make_spring(
+      settings.structural, rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(d))));
 
-    mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
-    if (!lcc.is_free<2>(d)) {
-      Vertex_handle here = vertex_after_edge(lcc, d);
-      Vertex_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
-      if (here != across) {
-        mechanics.bending =
-            make_spring(settings.bending,
-                        rest_distance(here->info().rest_position, across->info().rest_position));
-      }
-    }
-
-    mechanics.shear = DartSpring{SpringSlot::absent, 0, 0, 0};
-    if (lcc.darts_of_orbit<1>(d).size() == 4) {
-      mechanics.shear = make_spring(
-          settings.shear,
-          rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(lcc.next(d)))));
+  mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
+  if (!lcc.is_free<2>(d)) {
+    Vertex_handle here = vertex_after_edge(lcc, d);
+    Vertex_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
+    if (here != across) {
+      mechanics.bending =
+          make_spring(settings.bending,
+                      rest_distance(here->info().rest_position, across->info().rest_position));
     }
   }
+
+  mechanics.shear = DartSpring{SpringSlot::absent, 0, 0, 0};
+  if (lcc.darts_of_orbit<1>(d).size() == 4) {
+    mechanics.shear = make_spring(
+        settings.shear,
+        rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(lcc.next(d)))));
+  }
+}
+
+void assign_springs(ClothComplex& lcc, const SpringSettings& settings) {
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    assign_dart_springs(lcc, d, settings);
+  }
+}
+
+void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex) {
+  double mass_kg = 0.0;
+  // in a combinatorial map the darts of a vertex are those starting at it, one per incident face
+  for (auto d = lcc.darts_of_cell<0>(vertex->dart()).begin();
+       d != lcc.darts_of_cell<0>(vertex->dart()).end(); ++d) {
+    if (lcc.vertex_attribute(d) != vertex) continue;
+    const FaceRest& face = lcc.info<2>(d);
+    mass_kg += face.areal_density * face.rest_area / lcc.darts_of_orbit<1>(d).size();
+  }
+  vertex->info().mass = mass_kg;
 }
 
 double complex_total_mass(const ClothComplex& lcc) {

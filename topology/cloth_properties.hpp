@@ -22,6 +22,13 @@ void lump_masses(ClothComplex& lcc);
 /// Fills the three spring slots of every dart from `settings` and the material coordinates.
 void assign_springs(ClothComplex& lcc, const SpringSettings& settings);
 
+/// Fills the three spring slots of one dart (see assign_springs).
+void assign_dart_springs(ClothComplex& lcc, Dart_handle dart, const SpringSettings& settings);
+
+/// Sets the mass of `vertex` to its share of each incident face: sum of density x rest area /
+/// (vertex count of the face), the per-vertex form of lump_masses().
+void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex);
+
 /// The vertex that follows the dart's edge in the dart's face (the apex for a triangle).
 Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart);
 

@@ -70,6 +70,10 @@ void check_vertices(const ClothComplex& lcc, std::vector<std::string>& problems)
 void check_faces(const ClothComplex& lcc, std::vector<std::string>& problems) {
   for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
     if (!(f->info().rest_area > 0.0)) problems.push_back("a face has a non-positive rest area");
+    const double measured_m2 = face_rest_area(lcc, f->dart());
+    if (std::abs(f->info().rest_area - measured_m2) > 1e-12 * measured_m2) {
+      problems.push_back("a face's rest area differs from the area of its material coordinates");
+    }
     if (!(f->info().areal_density > 0.0)) problems.push_back("a face has a non-positive density");
   }
 }

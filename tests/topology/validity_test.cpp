@@ -43,6 +43,11 @@ TEST_F(ValidityTest, ReportsTwinDartsThatDisagree) {
   EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("disagree")));
 }
 
+TEST_F(ValidityTest, ReportsAStaleRestArea) {
+  lcc.attributes<2>().begin()->info().rest_area *= 2.0;
+  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("differs from the area of its material")));
+}
+
 TEST_F(ValidityTest, ReportsNonFinitePositions) {
   lcc.vertex_attributes().begin()->point() = Point3(std::nan(""), 0, 0);
   EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("non-finite")));

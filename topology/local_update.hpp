@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// After a topological edit: rest areas, masses and springs recomputed around what changed only
+/// (the course's second step of mesh refinement: neighbourhoods, masses and stiffnesses).
+
+#include <vector>
+
+#include "topology/cloth_complex.hpp"
+#include "topology/spring_settings.hpp"
+
+namespace tissu {
+
+/// Recomputes the rest area of every face in `faces` (one dart each), the lumped mass of every
+/// vertex of those faces (from all its incident faces), and the three spring slots of every dart
+/// of those faces and of the darts across their edges.
+void update_around_faces(ClothComplex& lcc, const std::vector<Dart_handle>& faces,
+                         const SpringSettings& settings);
+
+}  // namespace tissu

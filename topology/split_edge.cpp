@@ -1,0 +1,57 @@
+#include "topology/split_edge.hpp"
+
+#include <cassert>
+#include <stdexcept>
+
+#include "topology/local_update.hpp"
+#include "topology/validity.hpp"
+
+namespace tissu {
+namespace {
+
+bool face_is_triangle(const ClothComplex& lcc, Dart_const_handle d) {
+  return lcc.darts_of_orbit<1>(d).size() == 3;
+}
+
+}  // namespace
+
+Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& settings) {
+  const bool interior = !lcc.is_free<2>(dart);
+  if (!face_is_triangle(lcc, dart) || (interior && !face_is_triangle(lcc, lcc.opposite<2>(dart)))) {
+    throw std::invalid_argument("split_edge: refinement needs triangles on both sides of the edge");
+  }
+  const Vertex_handle a = lcc.vertex_attribute(dart);
+  const Vertex_handle b = lcc.vertex_attribute(lcc.next(dart));
+  const Particle& pa = a->info();
+  const Particle& pb = b->info();
+  Particle middle;
+  middle.velocity = 0.5 * (pa.velocity + pb.velocity);
+  middle.rest_position = CGAL::midpoint(pa.rest_position, pb.rest_position);
+
+  // dart: a -> m afterwards, next(dart): m -> b; across, opposite<2>(dart): m -> a
+  const Vertex_handle m =
+      lcc.create_vertex_attribute(CGAL::midpoint(a->point(), b->point()), middle);
+  lcc.insert_cell_0_in_cell_1(dart, m);
+
+  // cutting a quad returns the new edge's dart on the side of its first dart: both halves are the
+  // faces of that dart and of its twin
+  std::vector<Dart_handle> faces;
+  auto cut = [&](Dart_handle from, Dart_handle to) {
+    const Dart_handle new_edge = lcc.insert_cell_1_in_cell_2(from, to);
+    faces.push_back(new_edge);
+    faces.push_back(lcc.opposite<2>(new_edge));
+  };
+  // this side is now the quad a m b c: cut it from m to c
+  const Dart_handle from_m = lcc.next(dart);
+  cut(from_m, lcc.next(lcc.next(from_m)));
+  if (interior) {
+    // the other side is the quad m a e b: cut it from m to e
+    const Dart_handle across_from_m = lcc.opposite<2>(dart);
+    cut(across_from_m, lcc.next(lcc.next(across_from_m)));
+  }
+  update_around_faces(lcc, faces, settings);
+  assert(is_valid_cloth(lcc));
+  return from_m;
+}
+
+}  // namespace tissu
