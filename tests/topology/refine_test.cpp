@@ -1,0 +1,105 @@
+#include "topology/refine.hpp"
+
+#include <gtest/gtest.h>
+
+#include "cloth_test_support.hpp"
+#include "topology/cloth_properties.hpp"
+#include "topology/validity.hpp"
+
+namespace tissu {
+namespace {
+
+constexpr double density_kg_per_m2 = 0.2;
+
+class RefineTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // 1.5 m x 0.9 m in the x-z plane from (0.2, -0.1, 0.3), 12 x 8 cells
+    options = test::grid(12, 8, GridCells::triangles);
+    build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
+  }
+  void expect_valid_and_mass_conserved() {
+    const auto problems = validity_problems(lcc);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    const double expected_kg = density_kg_per_m2 * options.width * options.height;
+    EXPECT_NEAR(complex_total_mass(lcc), expected_kg, 1e-12 * expected_kg);
+  }
+  /// Stretches the cloth by `factor` along x for rest x beyond `from_x_m`.
+  void stretch_right_part(double from_x_m, double factor) {
+    for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+      const Point3& p = v->point();
+      if (p.x() > from_x_m)
+        v->point() = Point3(from_x_m + factor * (p.x() - from_x_m), p.y(), p.z());
+    }
+  }
+  GridOptions options;
+  SpringSettings springs = test::all_springs();
+  ClothComplex lcc;
+};
+
+TEST_F(RefineTest, FlatSheetDoesNotRefineByCurvature) {
+  RefinementOptions refinement;
+  refinement.curvature_threshold_rad = 0.05;
+  const RefinementReport report = refine(lcc, refinement, springs);
+  EXPECT_EQ(report.candidate_edges, 0);
+  EXPECT_EQ(report.splits, 0);
+}
+
+TEST_F(RefineTest, StrainRefinesOnlyWhereTheSheetIsStretched) {
+  const double from_x_m = 0.2 + 0.75;  // the right half
+  stretch_right_part(from_x_m, 1.2);
+  RefinementOptions refinement;
+  refinement.strain_threshold = 0.1;
+  const std::size_t before = lcc.vertex_attributes().size();
+  const RefinementReport report = refine(lcc, refinement, springs);
+  EXPECT_GT(report.splits, 0);
+  EXPECT_GT(lcc.vertex_attributes().size(), before);
+  // new particles lie on edges of triangles touching the stretched half: at most one cell left
+  const double cell_m = options.width / options.cells_u;
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    if (v->info().source_index < 0) {
+      EXPECT_GT(v->info().rest_position.x(), from_x_m - cell_m);
+    }
+  }
+  expect_valid_and_mass_conserved();
+}
+
+TEST_F(RefineTest, CurvatureRefinesAFold) {
+  // fold the sheet along x = 0.95 m by 90 degrees
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& p = v->point();
+    if (p.x() > 0.95) v->point() = Point3(0.95, p.y() + (p.x() - 0.95), p.z());
+  }
+  RefinementOptions refinement;
+  refinement.curvature_threshold_rad = 0.5;
+  const RefinementReport report = refine(lcc, refinement, springs);
+  EXPECT_EQ(report.candidate_edges, options.cells_v);  // the grid line x = 0.95 m: cells stay flat
+  EXPECT_GT(report.splits, 0);
+  expect_valid_and_mass_conserved();
+}
+
+TEST_F(RefineTest, RepeatedPassesStopAtTheMinimumEdgeLengthAndTheParticleCap) {
+  stretch_right_part(0.2, 1.5);
+  RefinementOptions refinement;
+  refinement.strain_threshold = 0.01;
+  refinement.min_edge_length_m = 0.02;
+  int passes = 0;
+  while (refine(lcc, refinement, springs).splits > 0 && passes < 50) ++passes;
+  EXPECT_LT(passes, 50);
+  expect_valid_and_mass_conserved();
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    EXPECT_GE(lcc.info(d).edge.rest_length, refinement.min_edge_length_m);
+  }
+
+  ClothComplex capped;
+  build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, capped);
+  std::swap(lcc, capped);
+  stretch_right_part(0.2, 1.5);
+  refinement.max_particles = 150;  // the grid has 117
+  while (refine(lcc, refinement, springs).splits > 0) {
+  }
+  EXPECT_EQ(lcc.vertex_attributes().size(), 150u);
+}
+
+}  // namespace
+}  // namespace tissu

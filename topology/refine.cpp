@@ -1,0 +1,86 @@
+#include "topology/refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "topology/split_edge.hpp"
+
+namespace tissu {
+namespace {
+
+double rest_length_m(const ClothComplex& lcc, Dart_const_handle d) {
+  return std::sqrt(CGAL::squared_distance(lcc.vertex_attribute(d)->info().rest_position,
+                                          lcc.vertex_attribute(lcc.next(d))->info().rest_position));
+}
+
+Vector3 face_normal(const ClothComplex& lcc, Dart_const_handle d) {
+  const Point3& a = lcc.point(d);
+  const Point3& b = lcc.point(lcc.next(d));
+  const Point3& c = lcc.point(lcc.next(lcc.next(d)));
+  return CGAL::cross_product(b - a, c - a);
+}
+
+/// The dart of the longest rest-space edge of the face of `d`.
+Dart_handle longest_edge(ClothComplex& lcc, Dart_handle d) {
+  Dart_handle best = d;
+  for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
+    if (rest_length_m(lcc, e) > rest_length_m(lcc, best)) best = e;
+  }
+  return best;
+}
+
+/// One dart per edge, the same whichever dart of the edge is given.
+Dart_handle edge_key(ClothComplex& lcc, Dart_handle d) {
+  return lcc.is_free<2>(d) ? d : std::min(d, lcc.opposite<2>(d));
+}
+
+bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
+  return (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
+         (o.curvature_threshold_rad > 0.0 &&
+          edge_dihedral_angle(lcc, d) > o.curvature_threshold_rad);
+}
+
+}  // namespace
+
+double edge_strain(const ClothComplex& lcc, Dart_const_handle d) {
+  const double now_m = std::sqrt(CGAL::squared_distance(lcc.point(d), lcc.point(lcc.next(d))));
+  return std::abs(now_m / rest_length_m(lcc, d) - 1.0);
+}
+
+double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
+  if (lcc.is_free<2>(d)) return 0.0;
+  const Vector3 n1 = face_normal(lcc, d);
+  const Vector3 n2 = face_normal(lcc, lcc.opposite<2>(d));
+  const double norms = std::sqrt(n1.squared_length() * n2.squared_length());
+  if (!(norms > 0.0)) return 0.0;
+  return std::acos(std::clamp(n1 * n2 / norms, -1.0, 1.0));
+}
+
+RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
+                        const SpringSettings& settings) {
+  RefinementReport report;
+  std::vector<Dart_handle> to_split;  // in traversal order, so that runs are reproducible
+  std::set<Dart_handle> queued;
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    if (!over_threshold(lcc, d, options)) continue;
+    ++report.candidate_edges;
+    std::vector<Dart_handle> sides{d};
+    if (!lcc.is_free<2>(d)) sides.push_back(lcc.opposite<2>(d));
+    for (Dart_handle side : sides) {
+      const Dart_handle longest = longest_edge(lcc, side);
+      if (rest_length_m(lcc, longest) >= 2.0 * options.min_edge_length_m) {
+        if (queued.insert(edge_key(lcc, longest)).second) to_split.push_back(longest);
+      }
+    }
+  }
+  // splitting one edge leaves every other edge an edge between triangles: the list stays valid
+  for (Dart_handle edge : to_split) {
+    if (static_cast<int>(lcc.vertex_attributes().size()) >= options.max_particles) break;
+    split_edge(lcc, edge, settings);
+    ++report.splits;
+  }
+  return report;
+}
+
+}  // namespace tissu
