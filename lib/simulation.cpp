@@ -12,6 +12,7 @@
 #include "topology/compile.hpp"
 #include "topology/current_mesh.hpp"
 #include "topology/face_strain.hpp"
+#include "topology/refine.hpp"
 
 namespace tissu {
 namespace {
@@ -76,9 +77,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     result.video_warning = rendered.video_warning;
   };
 
-  auto record = [&](int frame, double step_ms, int unconverged) {
-    const FrameStats row =
+  auto record = [&](int frame, double step_ms, int unconverged, int splits) {
+    FrameStats row =
         measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
+    row.splits = splits;
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
@@ -87,7 +89,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (render.enabled && frame % render.every == 0) to_render.push_back(snapshot(lcc));
     if (options.on_frame) options.on_frame(row);
   };
-  record(0, 0.0, 0);
+  record(0, 0.0, 0, 0);
 
   RunResult result;
   StepWorkspace workspace;
@@ -120,7 +122,15 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     cloth.state = std::move(next);
     write_back(cloth, cloth.state, lcc);
-    record(frame, step_ms, unconverged);
+    int splits = 0;
+    if (scenario.adaptive.enabled && frame % scenario.adaptive.every == 0) {
+      splits = refine(lcc, scenario.adaptive.refinement, scenario.springs).splits;
+      if (splits > 0) {
+        cloth = compile(lcc, cloth.state.time);
+        workspace = StepWorkspace{};
+      }
+    }
+    record(frame, step_ms, unconverged, splits);
     result.frames_done = frame;
   }
   render_recorded(result);

@@ -92,6 +92,24 @@ void read_environment(JsonObjectReader environment, Environment& e) {
   environment.finish();
 }
 
+AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
+  AdaptiveSettings a;
+  RefinementOptions& r = a.refinement;
+  a.enabled = adaptive.boolean_or("enabled", true);
+  a.every = adaptive.integer_or("every", a.every, 1, std::numeric_limits<int>::max());
+  r.strain_threshold = adaptive.number_or("strain", r.strain_threshold, non_negative(""));
+  r.curvature_threshold_rad =
+      adaptive.number_or("curvature", r.curvature_threshold_rad, between(0.0, M_PI, " (rad)"));
+  r.min_edge_length_m =
+      adaptive.number_or("min_edge_length", r.min_edge_length_m, positive(" (m)"));
+  r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, 10'000'000);
+  if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0) {
+    adaptive.fail("strain", "a positive \"strain\" or \"curvature\" threshold when adaptive");
+  }
+  adaptive.finish();
+  return a;
+}
+
 void read_output(JsonObjectReader output, OutputOptions& o) {
   o.write_meshes = output.boolean_or("meshes", o.write_meshes);
   o.mesh_format = mesh_format_from_string(output.choice_or("mesh_format", "obj", {"obj", "ply"}));
@@ -122,6 +140,14 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   s.pins = read_pins(top);
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
+  if (top.has("adaptive")) {
+    s.adaptive = read_adaptive(top.object("adaptive"));
+    if (s.adaptive.enabled && s.cloth.grid && s.cloth.grid->cells == GridCells::quads) {
+      throw ScenarioError(name +
+                          ": adaptive: refinement needs a triangle cloth; set "
+                          "cloth.grid.cells to \"triangles\"");
+    }
+  }
   if (top.has("output")) read_output(top.object("output"), s.output);
   if (top.has("render")) s.render = read_render(top.object("render"));
   top.finish();

@@ -13,6 +13,7 @@
 #include "solver/solver_params.hpp"
 #include "topology/grid_options.hpp"
 #include "topology/pin_selection.hpp"
+#include "topology/refinement_options.hpp"
 #include "topology/spring_settings.hpp"
 
 namespace tissu {
@@ -40,6 +41,13 @@ struct RenderSettings {
   bool video = true;             ///< <name>.mp4 and <name>.gif when ffmpeg is on the PATH
 };
 
+/// Adaptive refinement while the cloth moves (coarsening is not implemented yet).
+struct AdaptiveSettings {
+  bool enabled = false;
+  int every = 1;  ///< refine after every n-th frame
+  RefinementOptions refinement;
+};
+
 struct Scenario {
   std::string name;            ///< defaults to the file's stem
   std::filesystem::path file;  ///< the scenario file, for messages
@@ -52,6 +60,7 @@ struct Scenario {
   double frame_rate = 30.0;  ///< frames per simulated second (Hz)
   int substeps = 1;          ///< solver steps per frame
   int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default
+  AdaptiveSettings adaptive;
   OutputOptions output;
   RenderSettings render;
 };
