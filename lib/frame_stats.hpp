@@ -21,6 +21,7 @@ struct FrameStats {
   double step_ms = 0.0;           ///< wall time of the frame's solver steps (ms)
   int unconverged_steps = 0;      ///< implicit steps whose linear solve missed its tolerance
   int splits = 0;                 ///< edges bisected by adaptive refinement after this frame
+  int merges = 0;                 ///< bisections undone by adaptive coarsening after this frame
 };
 
 /// Writes stats.csv: a header line, then one line per frame, flushed as it goes.

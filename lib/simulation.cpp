@@ -9,6 +9,7 @@
 #include "lib/render_frames.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
+#include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
 #include "topology/current_mesh.hpp"
 #include "topology/face_strain.hpp"
@@ -53,6 +54,22 @@ RenderFrame snapshot(const ClothComplex& lcc) {
   return frame;
 }
 
+struct Adaptation {
+  int splits = 0;
+  int merges = 0;
+};
+
+/// Refines where the criteria ask for it, then coarsens where the cloth has calmed down.
+Adaptation adapt(ClothComplex& lcc, const AdaptiveSettings& adaptive,
+                 const SpringSettings& springs) {
+  Adaptation changes;
+  changes.splits = refine(lcc, adaptive.refinement, springs).splits;
+  if (adaptive.hysteresis > 0.0) {
+    changes.merges = coarsen(lcc, adaptive.refinement, adaptive.hysteresis, springs).merges;
+  }
+  return changes;
+}
+
 }  // namespace
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
@@ -77,10 +94,11 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     result.video_warning = rendered.video_warning;
   };
 
-  auto record = [&](int frame, double step_ms, int unconverged, int splits) {
+  auto record = [&](int frame, double step_ms, int unconverged, Adaptation changes) {
     FrameStats row =
         measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
-    row.splits = splits;
+    row.splits = changes.splits;
+    row.merges = changes.merges;
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
@@ -89,7 +107,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (render.enabled && frame % render.every == 0) to_render.push_back(snapshot(lcc));
     if (options.on_frame) options.on_frame(row);
   };
-  record(0, 0.0, 0, 0);
+  record(0, 0.0, 0, Adaptation{});
 
   RunResult result;
   StepWorkspace workspace;
@@ -122,15 +140,15 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     cloth.state = std::move(next);
     write_back(cloth, cloth.state, lcc);
-    int splits = 0;
+    Adaptation changes;
     if (scenario.adaptive.enabled && frame % scenario.adaptive.every == 0) {
-      splits = refine(lcc, scenario.adaptive.refinement, scenario.springs).splits;
-      if (splits > 0) {
+      changes = adapt(lcc, scenario.adaptive, scenario.springs);
+      if (changes.splits + changes.merges > 0) {
         cloth = compile(lcc, cloth.state.time);
         workspace = StepWorkspace{};
       }
     }
-    record(frame, step_ms, unconverged, splits);
+    record(frame, step_ms, unconverged, changes);
     result.frames_done = frame;
   }
   render_recorded(result);

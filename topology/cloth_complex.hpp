@@ -43,6 +43,13 @@ struct Particle {
   bool pinned = false;                   ///< motion prescribed (velocity kept)
   int source_index = -1;                 ///< index in the input grid or mesh, -1 if created
   int particle_index = -1;               ///< index in the last compiled SpringModel
+  /// 0 for input particles; for one made by a split, 1 + the highest level among the corners of
+  /// the faces it split. Anything that later changes its neighbourhood has a higher level, so
+  /// undoing splits by decreasing level undoes them in a valid order (coarsen.hpp).
+  int level = 0;
+  /// For a particle made by a split: the material coordinates of one end of the edge it split (the
+  /// other end is symmetric about it), so that coarsening knows which edge to restore (m)
+  Point3 split_edge_end = CGAL::ORIGIN;
 };
 
 /// Rest data of a face.

@@ -1,8 +1,10 @@
 #include "topology/split_edge.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 
+#include "topology/cloth_properties.hpp"
 #include "topology/local_update.hpp"
 #include "topology/validity.hpp"
 
@@ -25,8 +27,12 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   const Particle& pa = a->info();
   const Particle& pb = b->info();
   Particle middle;
+  middle.level =
+      1 + std::max({pa.level, pb.level, vertex_after_edge(lcc, dart)->info().level,
+                    interior ? vertex_after_edge(lcc, lcc.opposite<2>(dart))->info().level : 0});
   middle.velocity = 0.5 * (pa.velocity + pb.velocity);
   middle.rest_position = CGAL::midpoint(pa.rest_position, pb.rest_position);
+  middle.split_edge_end = pa.rest_position;
 
   // dart: a -> m afterwards, next(dart): m -> b; across, opposite<2>(dart): m -> a
   const Vertex_handle m =

@@ -103,6 +103,8 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
   r.min_edge_length_m =
       adaptive.number_or("min_edge_length", r.min_edge_length_m, positive(" (m)"));
   r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, 10'000'000);
+  a.hysteresis =
+      adaptive.number_or("hysteresis", a.hysteresis, {0.0, 0.999, false, "a number in [0, 1)"});
   if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0) {
     adaptive.fail("strain", "a positive \"strain\" or \"curvature\" threshold when adaptive");
   }

@@ -41,11 +41,14 @@ struct RenderSettings {
   bool video = true;             ///< <name>.mp4 and <name>.gif when ffmpeg is on the PATH
 };
 
-/// Adaptive refinement while the cloth moves (coarsening is not implemented yet).
+/// Adaptive refinement and coarsening while the cloth moves.
 struct AdaptiveSettings {
   bool enabled = false;
-  int every = 1;  ///< refine after every n-th frame
+  int every = 1;  ///< refine and coarsen after every n-th frame
   RefinementOptions refinement;
+  /// Coarsen where every criterion is below hysteresis x its threshold, in [0, 1): cells do not
+  /// flicker between levels. 0 never coarsens.
+  double hysteresis = 0.5;
 };
 
 struct Scenario {

@@ -1,0 +1,146 @@
+#include "topology/coarsen.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "topology/local_update.hpp"
+#include "topology/refine.hpp"
+#include "topology/validity.hpp"
+
+namespace tissu {
+namespace {
+
+/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners.
+struct Bisection {
+  Vertex_handle middle;
+  std::vector<Dart_handle> cut_edges;     ///< darts from the middle to each corner
+  std::vector<Dart_handle> corner_faces;  ///< a dart of each parent face, not touching the middle
+  std::vector<Vertex_handle> patch;       ///< the parent faces' vertices, middle excluded
+};
+
+std::vector<Dart_handle> outgoing_darts(ClothComplex& lcc, Vertex_handle v) {
+  std::vector<Dart_handle> out;
+  for (auto d = lcc.darts_of_cell<0>(v->dart()).begin(); d != lcc.darts_of_cell<0>(v->dart()).end();
+       ++d) {
+    if (lcc.vertex_attribute(d) == v) out.push_back(d);
+  }
+  return out;
+}
+
+/// Whether (a, b) is the edge whose split made `m`: m is its midpoint and a or b is the end
+/// recorded at the split (the two diagonals of a grid cell share their midpoint).
+bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex_handle b) {
+  const Point3& ra = a->info().rest_position;
+  const Point3& rb = b->info().rest_position;
+  const double tolerance_m2 = 1e-20 * CGAL::squared_distance(ra, rb);
+  const Point3& end = m->info().split_edge_end;
+  return CGAL::squared_distance(CGAL::midpoint(ra, rb), m->info().rest_position) <= tolerance_m2 &&
+         (CGAL::squared_distance(ra, end) <= tolerance_m2 ||
+          CGAL::squared_distance(rb, end) <= tolerance_m2);
+}
+
+/// The bisection that created `m`, if its neighbourhood is still exactly that.
+std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
+  const std::vector<Dart_handle> out = outgoing_darts(lcc, m);
+  // neighbours: the far end of each outgoing dart, plus, on the boundary, the origin of the dart
+  // that ends at m without a twin
+  std::vector<std::pair<Vertex_handle, Dart_handle>> neighbours;  // with the dart m -> it, if any
+  for (Dart_handle d : out) {
+    neighbours.emplace_back(lcc.vertex_attribute(lcc.next(d)), d);
+    const Dart_handle incoming = lcc.previous(d);
+    if (lcc.is_free<2>(incoming)) neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
+  }
+  const bool interior = neighbours.size() == 4 && out.size() == 4;
+  const bool boundary = neighbours.size() == 3 && out.size() == 2;
+  if (!interior && !boundary) return std::nullopt;
+  for (std::size_t i = 0; i < neighbours.size(); ++i) {
+    for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
+      if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
+      Bisection b{m, {}, {}, {}};
+      for (std::size_t k = 0; k < neighbours.size(); ++k) {
+        b.patch.push_back(neighbours[k].first);
+        if (k == i || k == j) continue;
+        const Dart_handle to_corner = neighbours[k].second;
+        if (to_corner == nullptr || lcc.is_free<2>(to_corner)) return std::nullopt;
+        b.cut_edges.push_back(to_corner);
+        // in the face of m -> corner, the dart after it leaves the corner away from m
+        b.corner_faces.push_back(lcc.next(to_corner));
+      }
+      return b;
+    }
+  }
+  return std::nullopt;
+}
+
+bool calm_around(ClothComplex& lcc, const Bisection& b, const RefinementOptions& o,
+                 double hysteresis) {
+  for (Dart_handle d : outgoing_darts(lcc, b.middle)) {
+    for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
+      if (o.strain_threshold > 0.0 && edge_strain(lcc, e) >= hysteresis * o.strain_threshold) {
+        return false;
+      }
+      if (o.curvature_threshold_rad > 0.0 &&
+          edge_dihedral_angle(lcc, e) >= hysteresis * o.curvature_threshold_rad) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+Eigen::Vector3d momentum(const std::vector<Vertex_handle>& vertices) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (Vertex_handle v : vertices) {
+    const Vector3& vel = v->info().velocity;
+    p += v->info().mass * Eigen::Vector3d(vel.x(), vel.y(), vel.z());
+  }
+  return p;
+}
+
+void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
+  std::vector<Vertex_handle> with_middle = b.patch;
+  with_middle.push_back(b.middle);
+  const Eigen::Vector3d momentum_before = momentum(with_middle);
+
+  for (Dart_handle cut : b.cut_edges) lcc.remove_cell<1>(cut);
+  lcc.remove_cell<0>(outgoing_darts(lcc, b.middle).front());
+  update_around_faces(lcc, b.corner_faces, settings);
+
+  // hand the removed particle's momentum to the free corners, in proportion to their mass
+  double free_mass_kg = 0.0;
+  for (Vertex_handle v : b.patch) free_mass_kg += v->info().pinned ? 0.0 : v->info().mass;
+  if (free_mass_kg > 0.0) {
+    const Eigen::Vector3d dv = (momentum_before - momentum(b.patch)) / free_mass_kg;
+    for (Vertex_handle v : b.patch) {
+      if (!v->info().pinned)
+        v->info().velocity = v->info().velocity + Vector3(dv.x(), dv.y(), dv.z());
+    }
+  }
+}
+
+}  // namespace
+
+CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
+                         const SpringSettings& settings) {
+  CoarseningReport report;
+  std::vector<Vertex_handle> created;
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    if (v->info().source_index < 0 && !v->info().pinned) created.push_back(v);
+  }
+  // highest level first: whatever changed a particle's neighbourhood after its split is undone
+  // before it (equal levels were never neighbours when made, so their order does not matter)
+  std::stable_sort(created.begin(), created.end(), [](Vertex_handle a, Vertex_handle b) {
+    return a->info().level > b->info().level;
+  });
+  for (Vertex_handle v : created) {
+    const std::optional<Bisection> b = bisection_at(lcc, v);
+    if (!b || !calm_around(lcc, *b, options, hysteresis)) continue;
+    undo(lcc, *b, settings);
+    ++report.merges;
+  }
+  assert(is_valid_cloth(lcc));
+  return report;
+}
+
+}  // namespace tissu

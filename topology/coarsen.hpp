@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// Undoes edge bisections where the cloth no longer needs them.
+
+#include "topology/cloth_complex.hpp"
+#include "topology/refinement_options.hpp"
+#include "topology/spring_settings.hpp"
+
+namespace tissu {
+
+struct CoarseningReport {
+  int merges = 0;  ///< bisections undone (particles removed)
+};
+
+/// One coarsening pass, by decreasing Particle::level: every particle created by refinement
+/// (source_index -1), not pinned, whose
+/// neighbourhood is still that of one bisection (the two halves of its parent edge plus one or
+/// two cut edges), and around which every edge is below `hysteresis` x each threshold of
+/// `options` (a threshold of 0 does not hold coarsening back), is removed: its cut edges are
+/// deleted (remove_cell<1>), then the vertex (remove_cell<0>), restoring the parent triangles.
+/// Particles of the input mesh are never removed. Rest areas, masses and springs are recomputed
+/// around each change; the removed particle's momentum is handed to the free corners so that the
+/// total linear momentum is unchanged (the centre of mass moves by at most the particle's mass
+/// times its distance to the parent edge's midpoint, which is zero while the cloth is unbent).
+CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
+                         const SpringSettings& settings);
+
+}  // namespace tissu
