@@ -39,15 +39,7 @@ void assign_face_rest(ClothComplex& lcc, double areal_density_kg_per_m2) {
 
 void lump_masses(ClothComplex& lcc) {
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    v->info().mass = 0.0;
-  }
-  for (auto face = lcc.attributes<2>().begin(); face != lcc.attributes<2>().end(); ++face) {
-    const double face_mass_kg = face->info().areal_density * face->info().rest_area;
-    auto corners = lcc.darts_of_orbit<1>(face->dart());
-    const double share_kg = face_mass_kg / static_cast<double>(corners.size());
-    for (auto d = corners.begin(); d != corners.end(); ++d) {
-      lcc.vertex_attribute(d)->info().mass += share_kg;
-    }
+    lump_vertex_mass(lcc, v);
   }
 }
 
