@@ -7,9 +7,11 @@
 namespace tissu {
 
 enum class Integrator {
-  symplectic_euler,  ///< v += h a(x, v); x += h v (semi-implicit Euler)
-  position_verlet,   ///< Stormer-Verlet in leapfrog form, second order (course, Algorithm 2)
-  implicit_euler,    ///< one linearised backward-Euler step (Baraff & Witkin 1998)
+  symplectic_euler,     ///< v += h a(x, v); x += h v (semi-implicit Euler)
+  position_verlet,      ///< Stormer-Verlet in leapfrog form, second order (course, Algorithm 2)
+  implicit_euler,       ///< one linearised backward-Euler step (Baraff & Witkin 1998)
+  projective_dynamics,  ///< backward Euler by local/global iterations (Liu et al. 2013; course,
+                        ///< Algorithms 1-3); options in ProjectiveDynamicsOptions
 };
 
 /// Wind blowing on the cloth faces; gusts modulate the mean velocity.
@@ -37,11 +39,53 @@ struct ImplicitOptions {
   int cg_max_iterations = 1000;  ///< a step whose solve has not converged by then is NotConverged
 };
 
+/// How the global step of Projective Dynamics solves (M/h^2 + L) p = M/h^2 y + J d.
+enum class PdGlobalSolver {
+  direct,                ///< sparse LDL^T (Eigen SimplicialLDLT), factorised once per model and h
+  jacobi,                ///< Jacobi sweeps, all particles from the previous iterate (parallel)
+  chebyshev,             ///< Jacobi with Chebyshev semi-iterative acceleration (Wang 2015)
+  gauss_seidel,          ///< sequential Gauss-Seidel in particle order (course's global step)
+  colored_gauss_seidel,  ///< Gauss-Seidel colour by colour, each colour in parallel
+                         ///< (Fratarcangeli et al. 2016; the course's red-black ordering)
+};
+
+/// Iterations of the Projective Dynamics integrator (course, Algorithm 1).
+struct ProjectiveDynamicsOptions {
+  PdGlobalSolver global_solver = PdGlobalSolver::direct;  ///< solver of the global step
+  /// local/global iterations per time step (numNonLinearIterations of Algorithm 1); with a
+  /// tolerance, the maximum number. Liu et al. 2013 use 10.
+  int iterations = 10;
+  /// sweeps of the iterative global solvers per local step (numLinearIterations of Algorithm 1);
+  /// ignored by the direct solver, which solves exactly.
+  int linear_iterations = 1;
+  /// stop early once max_i |p_i^k - p_i^(k-1)| <= tolerance * max_i |p_i^k - x_i| (change of the
+  /// iterate relative to the step's displacement), dimensionless; 0 runs exactly `iterations`.
+  /// A step that has not met a positive tolerance after `iterations` returns not_converged.
+  double tolerance = 0.0;
+  /// Chebyshev: estimate rho of the spectral radius of the (relaxed) Jacobi iteration, in [0, 1).
+  /// Wang 2015 measures it per scene from the convergence of plain Jacobi PD; it is close to 1 for
+  /// stiff cloth with many iterations per step. Inside PD, whose local step changes the right-hand
+  /// side between sweeps, too large a rho diverges: a hanging cloth (11 x 11, 500 N/m,
+  /// h = 10 ms, 10 iterations) is stable up to 0.98 and diverges at 0.99, hence 0.95.
+  /// 0 = Gershgorin's bound max_i sum_j s_ij / (m_i/h^2 + sum_j s_ij), relaxed as
+  /// 1 - gamma (1 - bound): an upper bound, tight on grids, for a linear solve (any rho < 1
+  /// converges on a linear system), too large for stiff cloth inside PD.
+  double chebyshev_spectral_radius = 0.95;
+  /// Chebyshev: under-relaxation gamma of each Jacobi sweep, p = gamma p_jacobi + (1 - gamma) p,
+  /// in (0, 1]; damps the highest-frequency modes that Jacobi alone flips (Wang 2015 under-relaxes
+  /// Jacobi the same way).
+  double chebyshev_relaxation = 0.9;
+  /// Chebyshev: sweeps of plain (relaxed) Jacobi before the acceleration starts (Wang 2015's S),
+  /// counted over the whole time step; values below 1 act as 1 (the first sweep is plain Jacobi).
+  int chebyshev_delay = 0;
+};
+
 struct SolverParams {
   Integrator integrator = Integrator::implicit_euler;
   double time_step = 1e-3;  ///< h (s), one step; a frame is several steps
   Environment environment;
   ImplicitOptions implicit;
+  ProjectiveDynamicsOptions pd;
 };
 
 }  // namespace tissu

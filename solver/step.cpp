@@ -5,6 +5,7 @@
 
 #include "solver/integrators/implicit_euler.hpp"
 #include "solver/integrators/position_verlet.hpp"
+#include "solver/integrators/projective_dynamics.hpp"
 #include "solver/integrators/symplectic_euler.hpp"
 
 namespace tissu {
@@ -55,6 +56,9 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       break;
     case Integrator::implicit_euler:
       status = implicit_euler_step(model, params, state, workspace);
+      break;
+    case Integrator::projective_dynamics:
+      status = projective_dynamics_step(model, params, state, workspace);
       break;
   }
   state.time += params.time_step;

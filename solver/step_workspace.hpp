@@ -7,6 +7,7 @@
 
 #include "solver/forces/accumulate_forces.hpp"
 #include "solver/integrators/implicit_euler_workspace.hpp"
+#include "solver/integrators/projective_dynamics_workspace.hpp"
 
 namespace tissu {
 
@@ -14,6 +15,7 @@ struct StepWorkspace {
   ForceWorkspace forces;            ///< buffers of accumulate_forces()
   Eigen::VectorXd force;            ///< 3#P total force of the last evaluation (N)
   ImplicitEulerWorkspace implicit;  ///< buffers of implicit_euler_step()
+  ProjectiveDynamicsWorkspace pd;   ///< buffers and caches of projective_dynamics_step()
 };
 
 }  // namespace tissu

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -43,10 +44,30 @@ void apply_override(nlohmann::json& root, const std::string& assignment, const s
 
 Integrator read_integrator(JsonObjectReader& simulation) {
   const std::string name = simulation.choice_or(
-      "integrator", "implicit_euler", {"symplectic_euler", "position_verlet", "implicit_euler"});
-  return name == "symplectic_euler"  ? Integrator::symplectic_euler
-         : name == "position_verlet" ? Integrator::position_verlet
-                                     : Integrator::implicit_euler;
+      "integrator", "implicit_euler",
+      {"symplectic_euler", "position_verlet", "implicit_euler", "projective_dynamics"});
+  return name == "symplectic_euler"      ? Integrator::symplectic_euler
+         : name == "position_verlet"     ? Integrator::position_verlet
+         : name == "projective_dynamics" ? Integrator::projective_dynamics
+                                         : Integrator::implicit_euler;
+}
+
+/// The "pd" object of "simulation": Projective Dynamics' global solver and iterations.
+ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
+  ProjectiveDynamicsOptions o;
+  // in PdGlobalSolver's order
+  const std::vector<std::string> solvers = {"direct", "jacobi", "chebyshev", "gauss_seidel",
+                                            "colored_gauss_seidel"};
+  const std::string solver = pd.choice_or("global_solver", "direct", solvers);
+  o.global_solver = static_cast<PdGlobalSolver>(std::find(solvers.begin(), solvers.end(), solver) -
+                                                solvers.begin());
+  o.iterations = pd.integer_or("iterations", o.iterations, 1, 100000);
+  o.linear_iterations = pd.integer_or("linear_iterations", o.linear_iterations, 1, 100000);
+  o.tolerance = pd.number_or("tolerance", o.tolerance, between(0.0, 1.0, ""));
+  o.chebyshev_spectral_radius = pd.number_or("chebyshev_spectral_radius",
+                                             o.chebyshev_spectral_radius, between(0.0, 0.9999, ""));
+  pd.finish();
+  return o;
 }
 
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
@@ -72,6 +93,7 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
   s.solver.implicit.cg_max_iterations =
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.threads = simulation.integer_or("threads", 0, 0, 1024);
+  if (simulation.has("pd")) s.solver.pd = read_pd(simulation.object("pd"));
   simulation.finish();
 }
 

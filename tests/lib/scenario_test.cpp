@@ -93,6 +93,22 @@ TEST(Scenario, ReadsEverySection) {
   EXPECT_EQ(s.output.mesh_format, MeshFormat::ply);
 }
 
+TEST(Scenario, ReadsProjectiveDynamicsOptions) {
+  const Scenario s = parse_scenario(
+      minimal, "dir/s.json",
+      {"simulation.integrator=projective_dynamics",
+       R"(simulation.pd={"global_solver": "colored_gauss_seidel", "iterations": 20, "tolerance": 1e-4})"});
+  EXPECT_EQ(s.solver.integrator, Integrator::projective_dynamics);
+  EXPECT_EQ(s.solver.pd.global_solver, PdGlobalSolver::colored_gauss_seidel);
+  EXPECT_EQ(s.solver.pd.iterations, 20);
+  EXPECT_DOUBLE_EQ(s.solver.pd.tolerance, 1e-4);
+  EXPECT_EQ(parse_scenario(minimal, "dir/s.json", {"simulation.pd.global_solver=chebyshev"})
+                .solver.pd.global_solver,
+            PdGlobalSolver::chebyshev);
+  EXPECT_THAT(error_of(minimal, {"simulation.pd.global_solver=sor"}),
+              HasSubstr("simulation.pd.global_solver: expected one of \"direct\", \"jacobi\""));
+}
+
 TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
   std::string text = minimal;
   text.replace(text.find("\"density\""), 9, "\"densty\"");
@@ -127,7 +143,7 @@ TEST(Scenario, OutOfRangeValuesNameTheRange) {
               HasSubstr("cloth.grid.resolution: expected a non-empty array of integers >= 1"));
   EXPECT_THAT(with("simulation.integrator", "\"rk4\""),
               HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
-                        "\"position_verlet\", \"implicit_euler\", got \"rk4\""));
+                        "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", got \"rk4\""));
   EXPECT_THAT(with("environment.wind.gust_amplitude", "11"),
               HasSubstr("expected a number between 0 and 10"));
   EXPECT_THAT(with("simulation.time_step", "0.007"),

@@ -16,7 +16,8 @@ namespace tissu {
 void PrintTo(Integrator integrator, std::ostream* out) {
   *out << (integrator == Integrator::symplectic_euler  ? "symplectic_euler"
            : integrator == Integrator::position_verlet ? "position_verlet"
-                                                       : "implicit_euler");
+           : integrator == Integrator::implicit_euler  ? "implicit_euler"
+                                                       : "projective_dynamics");
 }
 
 namespace {
@@ -83,7 +84,8 @@ TEST_P(OscillatorPeriod, WithinOnePercentOfTheExactPeriod) {
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, OscillatorPeriod,
                          testing::Values(Integrator::symplectic_euler, Integrator::position_verlet,
-                                         Integrator::implicit_euler),
+                                         Integrator::implicit_euler,
+                                         Integrator::projective_dynamics),
                          [](const testing::TestParamInfo<Integrator>& info) {
                            switch (info.param) {
                              case Integrator::symplectic_euler:
@@ -92,6 +94,8 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, OscillatorPeriod,
                                return "position_verlet";
                              case Integrator::implicit_euler:
                                return "implicit_euler";
+                             case Integrator::projective_dynamics:
+                               return "projective_dynamics";
                            }
                            return "unknown";
                          });
@@ -123,6 +127,9 @@ TEST(OscillatorConvergence, VerletIsSecondOrderAndTheEulersFirstOrder) {
   const double implicit = position_error(Integrator::implicit_euler, 2e-3) /
                           position_error(Integrator::implicit_euler, 1e-3);
   EXPECT_NEAR(implicit, 2.0, 0.3);
+  const double projective = position_error(Integrator::projective_dynamics, 2e-3) /
+                            position_error(Integrator::projective_dynamics, 1e-3);
+  EXPECT_NEAR(projective, 2.0, 0.3);
 }
 
 }  // namespace

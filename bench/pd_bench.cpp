@@ -1,0 +1,146 @@
+// Throughput of Projective Dynamics' global step: one sweep of each iterative global solver on
+// n x n grids with structural, shear and bending springs, 1 and 2 threads, reported as spring
+// updates per second (items_per_second: #S per sweep; each spring is read from both of its ends).
+// Also the local step with the right-hand side assembly, per spring. Results: docs/benchmarks.md.
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <utility>
+#include <vector>
+
+#include "solver/integrators/projective_dynamics.hpp"
+#include "solver/pd/pd_iterative_solvers.hpp"
+#include "solver/pd/pd_system.hpp"
+
+namespace tissu {
+namespace {
+
+/// n x n particles 1/(n-1) m apart in the z = 0 plane, 0.2 kg/m^2 lumped equally, springs along
+/// the grid lines and across each quad (1000 N/m) and two apart (4 N/m), top row pinned.
+SpringModel grid(int n, State& state) {
+  SpringModel model;
+  const double spacing = 1.0 / (n - 1);
+  const auto id = [n](int column, int row) { return row * n + column; };
+  state.x.resize(3 * n * n);
+  state.v.setZero(3 * n * n);
+  for (int row = 0; row < n; ++row) {
+    for (int column = 0; column < n; ++column) {
+      state.x.segment<3>(3 * id(column, row)) << column * spacing, row * spacing, 0.0;
+    }
+  }
+  model.mass.setConstant(n * n, 0.2 / (n * n));
+  model.pinned.assign(n * n, 0);
+  for (int column = 0; column < n; ++column) model.pinned[id(column, n - 1)] = 1;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<SpringKind> kinds;
+  for (int row = 0; row < n; ++row) {
+    for (int column = 0; column < n; ++column) {
+      const auto add = [&](int column2, int row2, SpringKind kind) {
+        if (column2 < 0 || column2 >= n || row2 >= n) return;
+        pairs.emplace_back(id(column, row), id(column2, row2));
+        kinds.push_back(kind);
+      };
+      add(column + 1, row, SpringKind::structural);
+      add(column, row + 1, SpringKind::structural);
+      add(column + 1, row + 1, SpringKind::shear);
+      add(column - 1, row + 1, SpringKind::shear);
+      add(column + 2, row, SpringKind::bending);
+      add(column, row + 2, SpringKind::bending);
+    }
+  }
+  const int springs = static_cast<int>(pairs.size());
+  model.springs.resize(springs, 2);
+  model.rest_length.resize(springs);
+  model.stiffness.resize(springs);
+  model.damping.setZero(springs);
+  model.kind = kinds;
+  for (int s = 0; s < springs; ++s) {
+    model.springs.row(s) << pairs[s].first, pairs[s].second;
+    model.rest_length[s] =
+        (state.x.segment<3>(3 * pairs[s].first) - state.x.segment<3>(3 * pairs[s].second)).norm();
+    model.stiffness[s] = kinds[s] == SpringKind::bending ? 4.0 : 1000.0;
+  }
+  model.triangles.resize(0, 3);
+  finalize_model(model);
+  return model;
+}
+
+constexpr double time_step_s = 1.0 / 60.0;
+
+void BM_GlobalSweep(benchmark::State& bench) {
+  const auto solver = static_cast<PdGlobalSolver>(bench.range(0));
+  const int side = static_cast<int>(bench.range(1));
+  omp_set_num_threads(static_cast<int>(bench.range(2)));
+  State state;
+  const SpringModel model = grid(side, state);
+  PdSystem system;
+  update_pd_system(model, time_step_s, system);
+  // right-hand side of a falling step: M/h^2 (x + h^2 g) + J d at the rest shape
+  Eigen::Matrix3Xd projections;
+  pd_local_step(model, state.x, state.x, projections);
+  Eigen::VectorXd y = state.x;
+  for (int p = 0; p < model.particle_count(); ++p) y[3 * p + 2] -= 9.81 * time_step_s * time_step_s;
+  Eigen::VectorXd rhs;
+  pd_global_rhs(model, system, y, projections, rhs);
+  ProjectiveDynamicsOptions options;
+  options.global_solver = solver;
+  Eigen::VectorXd p = state.x;
+  PdIterativeState iterative;
+  reset_pd_iterative_state(p, iterative);
+  for (auto _ : bench) {
+    pd_iterative_solve(system, options, rhs, 1, p, iterative);
+    benchmark::DoNotOptimize(p.data());
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(bench.iterations() * model.spring_count());
+  bench.counters["particles"] = model.particle_count();
+  bench.counters["springs"] = model.spring_count();
+  bench.counters["colors"] = system.coloring.color_count();
+  bench.counters["threads"] = static_cast<double>(bench.range(2));
+}
+
+void BM_LocalStepAndRhs(benchmark::State& bench) {
+  const int side = static_cast<int>(bench.range(0));
+  omp_set_num_threads(static_cast<int>(bench.range(1)));
+  State state;
+  const SpringModel model = grid(side, state);
+  PdSystem system;
+  update_pd_system(model, time_step_s, system);
+  Eigen::Matrix3Xd projections;
+  Eigen::VectorXd rhs;
+  for (auto _ : bench) {
+    pd_local_step(model, state.x, state.x, projections);
+    pd_global_rhs(model, system, state.x, projections, rhs);
+    benchmark::DoNotOptimize(rhs.data());
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(bench.iterations() * model.spring_count());
+  bench.counters["threads"] = static_cast<double>(bench.range(1));
+}
+
+void sweep_arguments(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"solver", "side", "threads"});
+  for (const PdGlobalSolver solver :
+       {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
+        PdGlobalSolver::colored_gauss_seidel}) {
+    for (int side : {128, 256, 512}) {
+      for (int threads : {1, 2}) b->Args({static_cast<int>(solver), side, threads});
+    }
+  }
+}
+
+void local_arguments(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"side", "threads"});
+  for (int side : {128, 256, 512}) {
+    for (int threads : {1, 2}) b->Args({side, threads});
+  }
+}
+
+BENCHMARK(BM_GlobalSweep)->Apply(sweep_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_LocalStepAndRhs)->Apply(local_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace tissu
+
+BENCHMARK_MAIN();

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// Direct solve of Projective Dynamics' global step by a sparse Cholesky factorisation that is
+/// computed once and reused while the system stays the same (Liu et al. 2013; Bouaziz et al. 2014:
+/// the system matrix M/h^2 + L is constant, so its prefactorisation makes each global step two
+/// triangular solves).
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <memory>
+
+#include "solver/pd/pd_system.hpp"
+
+namespace tissu {
+
+/// Sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) of the free-particle matrix
+/// A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
+/// Refactorised when the system's generation changes (update_pd_system() rebuilt it: new
+/// springs, stiffnesses, masses, pins or time step). Copying gives an unfactorised solver (Eigen's
+/// factorisations are not copyable); it factorises again on first use.
+class PdDirectSolver {
+ public:
+  PdDirectSolver() = default;
+  PdDirectSolver(const PdDirectSolver&) {}
+  PdDirectSolver& operator=(const PdDirectSolver&) {
+    m_ldlt.reset();
+    m_generation = 0;
+    return *this;
+  }
+  PdDirectSolver(PdDirectSolver&&) noexcept = default;
+  PdDirectSolver& operator=(PdDirectSolver&&) noexcept = default;
+  ~PdDirectSolver() = default;
+
+  /// Factorises A_ff unless it is already factorised for this system. False if the factorisation
+  /// failed (A_ff not positive definite: a free particle without mass).
+  bool factorize(const PdSystem& system);
+
+  /// Solves A_ff p_f = c_f + sum over pinned neighbours j of s_ij p_j for the free particles of p
+  /// (3#P, m), pinned entries of p read, not written; c is 3#P (kg m/s^2). Factorises first if
+  /// needed. False if the factorisation failed (p unchanged).
+  bool solve(const PdSystem& system, const Eigen::VectorXd& c, Eigen::VectorXd& p);
+
+  /// Number of factorisations done by this object, for tests and benchmarks.
+  int factorization_count() const { return m_factorizations; }
+
+ private:
+  using Matrix = Eigen::SparseMatrix<double>;
+  std::unique_ptr<Eigen::SimplicialLDLT<Matrix>> m_ldlt;
+  std::uint64_t m_generation = 0;  ///< system generation of the factorisation, 0 = none
+  int m_factorizations = 0;
+  Eigen::VectorXd m_inverse_d;  ///< #F 1 / D of the LDL^T factorisation (s^2/kg)
+  Eigen::MatrixX3d m_rhs;       ///< #F x 3 right-hand side
+  Eigen::MatrixX3d m_solution;  ///< #F x 3 positions of the free particles (m)
+};
+
+}  // namespace tissu

@@ -1,0 +1,78 @@
+#include "solver/pd/pd_system.hpp"
+
+#include <algorithm>
+#include <atomic>
+
+namespace tissu {
+namespace {
+
+bool is_built_for(const SpringModel& model, double h, const PdSystem& system) {
+  return system.generation != 0 && system.built_time_step == h &&
+         system.built_springs.rows() == model.springs.rows() &&
+         system.built_mass.size() == model.mass.size() && system.built_pinned == model.pinned &&
+         system.built_springs == model.springs && system.built_stiffness == model.stiffness &&
+         system.built_mass == model.mass;
+}
+
+std::uint64_t next_generation() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
+}  // namespace
+
+bool update_pd_system(const SpringModel& model, double h, PdSystem& system) {
+  if (is_built_for(model, h, system)) return false;
+  const int particles = model.particle_count();
+  const ParticleSpringIncidence& incidence = model.incidence;
+  system.built_springs = model.springs;
+  system.built_stiffness = model.stiffness;
+  system.built_mass = model.mass;
+  system.built_pinned = model.pinned;
+  system.built_time_step = h;
+  system.generation = next_generation();
+
+  system.neighbour_offsets = incidence.offsets;
+  const std::size_t entries = incidence.springs.size();
+  system.neighbours.resize(entries);
+  system.weights.resize(entries);
+  for (std::size_t e = 0; e < entries; ++e) {
+    const int s = incidence.springs[e];
+    system.neighbours[e] = model.springs(s, incidence.first_end[e] ? 1 : 0);
+    system.weights[e] = model.stiffness[s];
+  }
+
+  system.inertia = model.mass / (h * h);
+  system.diagonal = system.inertia;
+  system.pinned.resize(particles);
+  system.free_index.assign(particles, -1);
+  system.free_particles.clear();
+  system.jacobi_radius_bound = 0.0;
+  for (int p = 0; p < particles; ++p) {
+    system.pinned[p] = model.inverse_mass[p] == 0.0 ? 1 : 0;
+    double coupling = 0.0;
+    for (int e = incidence.offsets[p]; e < incidence.offsets[p + 1]; ++e) {
+      coupling += system.weights[e];
+    }
+    system.diagonal[p] += coupling;
+    if (system.pinned[p]) continue;
+    system.free_index[p] = static_cast<int>(system.free_particles.size());
+    system.free_particles.push_back(p);
+    system.jacobi_radius_bound =
+        std::max(system.jacobi_radius_bound, coupling / system.diagonal[p]);
+  }
+
+  color_particles(system.neighbour_offsets, system.neighbours, system.coloring, system.scratch);
+  const ParticleColoring& coloring = system.coloring;
+  system.free_color_offsets.assign(1, 0);
+  system.free_color_order.clear();
+  for (int c = 0; c < coloring.color_count(); ++c) {
+    for (int k = coloring.color_offsets[c]; k < coloring.color_offsets[c + 1]; ++k) {
+      if (!system.pinned[coloring.order[k]]) system.free_color_order.push_back(coloring.order[k]);
+    }
+    system.free_color_offsets.push_back(static_cast<int>(system.free_color_order.size()));
+  }
+  return true;
+}
+
+}  // namespace tissu

@@ -1,0 +1,207 @@
+// Every iterative solver of the PD global step converges to the direct (LDL^T) solution of the
+// same linear system, on random spring networks and on a cloth grid.
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+
+#include "solver/pd/pd_direct_solver.hpp"
+#include "solver/pd/pd_iterative_solvers.hpp"
+#include "solver/pd/pd_system.hpp"
+#include "tests/solver/test_models.hpp"
+
+namespace tissu {
+namespace {
+
+const PdGlobalSolver iterative_solvers[] = {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
+                                            PdGlobalSolver::gauss_seidel,
+                                            PdGlobalSolver::colored_gauss_seidel};
+
+const char* name(PdGlobalSolver solver) {
+  switch (solver) {
+    case PdGlobalSolver::direct:
+      return "direct";
+    case PdGlobalSolver::jacobi:
+      return "jacobi";
+    case PdGlobalSolver::chebyshev:
+      return "chebyshev";
+    case PdGlobalSolver::gauss_seidel:
+      return "gauss_seidel";
+    case PdGlobalSolver::colored_gauss_seidel:
+      return "colored_gauss_seidel";
+  }
+  return "?";
+}
+
+struct LinearProblem {
+  SpringModel model;
+  PdSystem system;
+  Eigen::VectorXd rhs;    // 3#P c
+  Eigen::VectorXd start;  // 3#P initial iterate, pinned entries prescribed
+};
+
+// random right-hand side and start around the model's positions, a few particles pinned
+LinearProblem make_problem(SpringModel model, const State& state, double h, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  LinearProblem problem;
+  for (int p = 0; p < model.particle_count(); p += 7) model.pinned[p] = 1;
+  finalize_model(model);
+  problem.model = std::move(model);
+  update_pd_system(problem.model, h, problem.system);
+  const Eigen::Index n = state.x.size();
+  problem.start = state.x;
+  for (Eigen::Index i = 0; i < n; ++i) problem.start[i] += 0.1 * unit(rng);
+  // c = A x_target + noise, so that the solution is of the size of the positions
+  problem.rhs.resize(n);
+  for (int p = 0; p < problem.model.particle_count(); ++p) {
+    problem.rhs.segment<3>(3 * p) = problem.system.inertia[p] * state.x.segment<3>(3 * p);
+    for (int k = 0; k < 3; ++k) problem.rhs[3 * p + k] += 10.0 * unit(rng);
+  }
+  return problem;
+}
+
+Eigen::VectorXd direct_solution(const LinearProblem& problem) {
+  PdDirectSolver direct;
+  Eigen::VectorXd p = problem.start;
+  EXPECT_TRUE(direct.solve(problem.system, problem.rhs, p));
+  return p;
+}
+
+// sweeps until the iterate stops moving (or a cap), the fixed point of the iteration
+Eigen::VectorXd iterate(const LinearProblem& problem, PdGlobalSolver solver, int max_sweeps) {
+  ProjectiveDynamicsOptions options;
+  options.global_solver = solver;
+  Eigen::VectorXd p = problem.start;
+  PdIterativeState state;
+  reset_pd_iterative_state(p, state);
+  for (int n = 0; n < max_sweeps; n += 10) {
+    const Eigen::VectorXd before = p;
+    pd_iterative_solve(problem.system, options, problem.rhs, 10, p, state);
+    if ((p - before).lpNorm<Eigen::Infinity>() < 1e-15) break;
+  }
+  return p;
+}
+
+void expect_converges_to_direct(const LinearProblem& problem, int max_sweeps) {
+  const Eigen::VectorXd exact = direct_solution(problem);
+  const double scale = exact.lpNorm<Eigen::Infinity>();
+  for (const PdGlobalSolver solver : iterative_solvers) {
+    const Eigen::VectorXd p = iterate(problem, solver, max_sweeps);
+    EXPECT_LT((p - exact).lpNorm<Eigen::Infinity>(), 1e-10 * scale) << name(solver);
+    // pinned particles are not touched
+    for (int i = 0; i < problem.model.particle_count(); ++i) {
+      if (problem.model.pinned[i]) {
+        EXPECT_EQ(Eigen::Vector3d(p.segment<3>(3 * i)),
+                  Eigen::Vector3d(problem.start.segment<3>(3 * i)));
+      }
+    }
+  }
+}
+
+TEST(PdGlobalSolvers, ConvergeToTheDirectSolveOnRandomSpringNetworks) {
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    State state;
+    SpringModel model = test::random_model(30 + 5 * static_cast<int>(seed),
+                                           150 + 20 * static_cast<int>(seed), 0, seed, state);
+    SCOPED_TRACE(seed);
+    expect_converges_to_direct(make_problem(std::move(model), state, 0.01, seed), 20000);
+  }
+}
+
+TEST(PdGlobalSolvers, ConvergeToTheDirectSolveOnAClothGrid) {
+  // 12 x 10 grid, structural + shear + bending springs, 30 steps per second: Jacobi's radius
+  // bound is 2400 / (2400 + 0.002 * 30^2) = 0.9993
+  State state;
+  SpringModel model = test::grid_model(12, 10, 0.05, 0.002, 200.0, 0.0, state);
+  const LinearProblem problem = make_problem(std::move(model), state, 1.0 / 30.0, 3);
+  EXPECT_GT(problem.system.jacobi_radius_bound, 0.999);
+  expect_converges_to_direct(problem, 200000);
+}
+
+TEST(PdGlobalSolvers, ChebyshevIsFasterThanJacobi) {
+  // stiff cloth at 30 steps per second held by two corners: slow smooth modes, Jacobi's radius
+  // close to 1, where Wang 2015's acceleration pays
+  State state;
+  SpringModel model = test::grid_model(16, 16, 0.05, 0.002, 200.0, 0.0, state);
+  model.pinned[0] = 1;
+  model.pinned[15] = 1;
+  finalize_model(model);
+  LinearProblem problem;
+  problem.model = model;
+  update_pd_system(problem.model, 1.0 / 30.0, problem.system);
+  problem.start = state.x;
+  problem.rhs = Eigen::VectorXd::Zero(state.x.size());
+  for (int p = 0; p < model.particle_count(); ++p) {
+    problem.rhs.segment<3>(3 * p) = problem.system.inertia[p] * Eigen::Vector3d(0.0, 0.0, -1.0);
+  }
+  const Eigen::VectorXd exact = direct_solution(problem);
+  const auto error_after = [&](PdGlobalSolver solver, int sweeps) {
+    ProjectiveDynamicsOptions options;
+    options.global_solver = solver;
+    options.chebyshev_spectral_radius = 0.0;  // Gershgorin's bound: right for a linear solve
+    Eigen::VectorXd p = problem.start;
+    PdIterativeState state;
+    reset_pd_iterative_state(p, state);
+    pd_iterative_solve(problem.system, options, problem.rhs, sweeps, p, state);
+    return (p - exact).lpNorm<Eigen::Infinity>();
+  };
+  EXPECT_LT(error_after(PdGlobalSolver::chebyshev, 100),
+            0.1 * error_after(PdGlobalSolver::jacobi, 100));
+  EXPECT_LT(error_after(PdGlobalSolver::gauss_seidel, 100),
+            error_after(PdGlobalSolver::jacobi, 100));
+}
+
+TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
+  // 30 x 30 particles: above min_parallel_items, so the loops do run on two threads
+  State state;
+  SpringModel model = test::grid_model(30, 30, 0.05, 0.002, 200.0, 0.0, state);
+  const LinearProblem problem = make_problem(std::move(model), state, 1.0 / 100.0, 9);
+  const int previous = omp_get_max_threads();
+  for (const PdGlobalSolver solver : iterative_solvers) {
+    Eigen::VectorXd results[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+      omp_set_num_threads(threads);
+      ProjectiveDynamicsOptions options;
+      options.global_solver = solver;
+      Eigen::VectorXd p = problem.start;
+      PdIterativeState state;
+      reset_pd_iterative_state(p, state);
+      pd_iterative_solve(problem.system, options, problem.rhs, 25, p, state);
+      results[threads - 1] = p;
+    }
+    EXPECT_TRUE((results[0].array() == results[1].array()).all()) << name(solver);
+    EXPECT_NE(results[0], problem.start) << name(solver);
+  }
+  omp_set_num_threads(previous);
+}
+
+TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
+  State state;
+  SpringModel model = test::grid_model(6, 5, 0.05, 0.002, 200.0, 0.0, state);
+  PdSystem system;
+  PdDirectSolver direct;
+  EXPECT_TRUE(update_pd_system(model, 0.01, system));
+  EXPECT_TRUE(direct.factorize(system));
+  EXPECT_FALSE(update_pd_system(model, 0.01, system));
+  EXPECT_TRUE(direct.factorize(system));
+  EXPECT_EQ(direct.factorization_count(), 1);
+  EXPECT_TRUE(update_pd_system(model, 0.02, system));  // new h
+  EXPECT_TRUE(direct.factorize(system));
+  EXPECT_EQ(direct.factorization_count(), 2);
+  model.stiffness[3] *= 2.0;  // new stiffness
+  EXPECT_TRUE(update_pd_system(model, 0.02, system));
+  model.pinned[4] = 1;  // new pin
+  finalize_model(model);
+  EXPECT_TRUE(update_pd_system(model, 0.02, system));
+  EXPECT_EQ(system.free_index[4], -1);
+  EXPECT_EQ(system.free_particles.size(), static_cast<std::size_t>(model.particle_count() - 1));
+  EXPECT_TRUE(is_valid_coloring(model, system.coloring));
+  // a copied solver starts unfactorised
+  PdDirectSolver copy = direct;
+  EXPECT_EQ(copy.factorization_count(), 0);
+}
+
+}  // namespace
+}  // namespace tissu
