@@ -26,6 +26,22 @@ void check_state_size(const SpringModel& model, const State& state) {
 
 }  // namespace
 
+const char* to_string(PdGlobalSolver solver) {
+  switch (solver) {
+    case PdGlobalSolver::direct:
+      return "direct";
+    case PdGlobalSolver::jacobi:
+      return "jacobi";
+    case PdGlobalSolver::chebyshev:
+      return "chebyshev";
+    case PdGlobalSolver::gauss_seidel:
+      return "gauss_seidel";
+    case PdGlobalSolver::colored_gauss_seidel:
+      return "colored_gauss_seidel";
+  }
+  return "unknown";
+}
+
 const char* to_string(StepStatus status) {
   switch (status) {
     case StepStatus::ok:

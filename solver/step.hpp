@@ -16,6 +16,10 @@ enum class StepStatus {
 
 const char* to_string(StepStatus status);
 
+/// The scenario name of a Projective Dynamics global solver ("direct", "colored_gauss_seidel",
+/// ...).
+const char* to_string(PdGlobalSolver solver);
+
 /// Advances `state` by params.time_step with the chosen integrator. Pinned particles keep their
 /// velocity (zero unless prescribed). On non_finite the state is left as computed (the caller keeps
 /// the last good state); the model is never modified.

@@ -4,6 +4,7 @@
 
 #include "lib/scenario/read_cloth.hpp"
 #include "lib/scenario/read_render.hpp"
+#include "solver/step.hpp"
 
 namespace tissu {
 namespace {

@@ -141,9 +141,10 @@ TEST(Scenario, OutOfRangeValuesNameTheRange) {
               HasSubstr("expected a number >= 0 (N s/m), got -0.1"));
   EXPECT_THAT(with("cloth.grid.resolution", "[0, 3]"),
               HasSubstr("cloth.grid.resolution: expected a non-empty array of integers >= 1"));
-  EXPECT_THAT(with("simulation.integrator", "\"rk4\""),
-              HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
-                        "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", got \"rk4\""));
+  EXPECT_THAT(
+      with("simulation.integrator", "\"rk4\""),
+      HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
+                "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", got \"rk4\""));
   EXPECT_THAT(with("environment.wind.gust_amplitude", "11"),
               HasSubstr("expected a number between 0 and 10"));
   EXPECT_THAT(with("simulation.time_step", "0.007"),

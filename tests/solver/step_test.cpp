@@ -156,16 +156,7 @@ TEST(Step, BitwiseIdenticalForOneAndTwoThreads) {
     model.pinned[19] = 1;
     finalize_model(model);
     const SolverParams params = windy_params(integrator);
-    State results[2];
-    const int previous = omp_get_max_threads();
-    for (int threads = 1; threads <= 2; ++threads) {
-      omp_set_num_threads(threads);
-      State& state = results[threads - 1];
-      state = initial;
-      StepWorkspace workspace;
-      for (int n = 0; n < 30; ++n) ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
-    }
-    omp_set_num_threads(previous);
+    const auto results = test::step_with_one_and_two_threads(model, params, initial, 30);
     EXPECT_TRUE((results[0].x.array() == results[1].x.array()).all());
     EXPECT_TRUE((results[0].v.array() == results[1].v.array()).all());
     EXPECT_NE(results[0].x, initial.x);

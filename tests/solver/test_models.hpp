@@ -2,11 +2,16 @@
 /// \file
 /// Small models shared by the solver tests.
 
+#include <gtest/gtest.h>
+#include <omp.h>
 #include <Eigen/Core>
+
+#include <array>
 #include <random>
 #include <vector>
 
 #include "solver/spring_model.hpp"
+#include "solver/step.hpp"
 
 namespace tissu::test {
 
@@ -114,6 +119,25 @@ inline SpringModel grid_model(int nx, int ny, double spacing, double particle_ma
   }
   finalize_model(model);
   return model;
+}
+
+/// Steps a copy of `initial` `steps` times with 1, then 2 OpenMP threads, each with a fresh
+/// workspace; returns both end states. Restores the thread count.
+inline std::array<State, 2> step_with_one_and_two_threads(const SpringModel& model,
+                                                          const SolverParams& params,
+                                                          const State& initial, int steps) {
+  std::array<State, 2> results;
+  const int previous = omp_get_max_threads();
+  for (int threads = 1; threads <= 2; ++threads) {
+    omp_set_num_threads(threads);
+    State& state = results[threads - 1];
+    state = initial;
+    StepWorkspace workspace;
+    for (int n = 0; n < steps; ++n)
+      EXPECT_EQ(step(model, params, state, workspace), StepStatus::ok);
+  }
+  omp_set_num_threads(previous);
+  return results;
 }
 
 }  // namespace tissu::test

@@ -258,16 +258,7 @@ TEST(ProjectiveDynamics, IdenticalForOneAndTwoThreads) {
     params.pd.global_solver = solver;
     params.environment.wind.air_density = 1.2;
     params.environment.wind.velocity = Eigen::Vector3d(0.0, 0.0, 3.0);
-    State results[2];
-    const int previous = omp_get_max_threads();
-    for (int threads = 1; threads <= 2; ++threads) {
-      omp_set_num_threads(threads);
-      State& state = results[threads - 1];
-      state = initial;
-      StepWorkspace workspace;
-      for (int n = 0; n < 20; ++n) ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
-    }
-    omp_set_num_threads(previous);
+    const auto results = test::step_with_one_and_two_threads(model, params, initial, 20);
     EXPECT_TRUE((results[0].x.array() == results[1].x.array()).all()) << static_cast<int>(solver);
     EXPECT_TRUE((results[0].v.array() == results[1].v.array()).all()) << static_cast<int>(solver);
     EXPECT_NE(results[0].x, initial.x);
@@ -313,21 +304,7 @@ TEST_P(HangingClothWithPd, ReachesRestWithThePinsCarryingTheWholeWeight) {
 }
 
 INSTANTIATE_TEST_SUITE_P(GlobalSolvers, HangingClothWithPd, ::testing::ValuesIn(all_solvers),
-                         [](const auto& info) {
-                           switch (info.param) {
-                             case PdGlobalSolver::direct:
-                               return "direct";
-                             case PdGlobalSolver::jacobi:
-                               return "jacobi";
-                             case PdGlobalSolver::chebyshev:
-                               return "chebyshev";
-                             case PdGlobalSolver::gauss_seidel:
-                               return "gauss_seidel";
-                             case PdGlobalSolver::colored_gauss_seidel:
-                               return "colored_gauss_seidel";
-                           }
-                           return "unknown";
-                         });
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 }  // namespace
 }  // namespace tissu

@@ -9,6 +9,7 @@
 #include "solver/pd/pd_direct_solver.hpp"
 #include "solver/pd/pd_iterative_solvers.hpp"
 #include "solver/pd/pd_system.hpp"
+#include "solver/step.hpp"
 #include "tests/solver/test_models.hpp"
 
 namespace tissu {
@@ -17,22 +18,6 @@ namespace {
 const PdGlobalSolver iterative_solvers[] = {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
                                             PdGlobalSolver::gauss_seidel,
                                             PdGlobalSolver::colored_gauss_seidel};
-
-const char* name(PdGlobalSolver solver) {
-  switch (solver) {
-    case PdGlobalSolver::direct:
-      return "direct";
-    case PdGlobalSolver::jacobi:
-      return "jacobi";
-    case PdGlobalSolver::chebyshev:
-      return "chebyshev";
-    case PdGlobalSolver::gauss_seidel:
-      return "gauss_seidel";
-    case PdGlobalSolver::colored_gauss_seidel:
-      return "colored_gauss_seidel";
-  }
-  return "?";
-}
 
 struct LinearProblem {
   SpringModel model;
@@ -89,7 +74,7 @@ void expect_converges_to_direct(const LinearProblem& problem, int max_sweeps) {
   const double scale = exact.lpNorm<Eigen::Infinity>();
   for (const PdGlobalSolver solver : iterative_solvers) {
     const Eigen::VectorXd p = iterate(problem, solver, max_sweeps);
-    EXPECT_LT((p - exact).lpNorm<Eigen::Infinity>(), 1e-10 * scale) << name(solver);
+    EXPECT_LT((p - exact).lpNorm<Eigen::Infinity>(), 1e-10 * scale) << to_string(solver);
     // pinned particles are not touched
     for (int i = 0; i < problem.model.particle_count(); ++i) {
       if (problem.model.pinned[i]) {
@@ -171,8 +156,8 @@ TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
       pd_iterative_solve(problem.system, options, problem.rhs, 25, p, state);
       results[threads - 1] = p;
     }
-    EXPECT_TRUE((results[0].array() == results[1].array()).all()) << name(solver);
-    EXPECT_NE(results[0], problem.start) << name(solver);
+    EXPECT_TRUE((results[0].array() == results[1].array()).all()) << to_string(solver);
+    EXPECT_NE(results[0], problem.start) << to_string(solver);
   }
   omp_set_num_threads(previous);
 }
