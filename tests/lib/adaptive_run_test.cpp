@@ -8,6 +8,7 @@
 
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
+#include "tests/test_temp_dir.hpp"
 
 namespace tissu {
 namespace {
@@ -51,7 +52,7 @@ Column read_stats(const std::filesystem::path& csv) {
 TEST(AdaptiveRun, ThousandStepsOfRefinementKeepTheTotalMass) {
   const Scenario scenario = parse_scenario(waving_flag, "flag.json");
   RunOptions options;
-  options.output_dir = std::filesystem::path(::testing::TempDir()) / "adaptive_run";
+  options.output_dir = test::fresh_temp_dir("adaptive_run");
   const RunResult result = run_scenario(scenario, options);
   ASSERT_TRUE(result.ok) << result.failure;
 

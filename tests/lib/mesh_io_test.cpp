@@ -10,6 +10,7 @@
 
 #include "lib/mesh_io/read_mesh.hpp"
 #include "lib/mesh_io/write_mesh.hpp"
+#include "tests/test_temp_dir.hpp"
 
 namespace tissu {
 namespace {
@@ -21,10 +22,7 @@ using ::testing::HasSubstr;
 /// A fresh directory for the running test.
 fs::path test_dir() {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / "tissu_mesh_io" / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return test::fresh_temp_dir(std::string("mesh_io/") + info->name());
 }
 
 fs::path write_file(const fs::path& file, const std::string& content) {

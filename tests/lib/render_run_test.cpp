@@ -8,6 +8,7 @@
 #include "lib/render_folder.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
+#include "tests/test_temp_dir.hpp"
 
 namespace tissu {
 namespace {
@@ -42,9 +43,7 @@ std::pair<int, int> png_size(const std::filesystem::path& file) {
 }
 
 std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / name;
-  std::filesystem::remove_all(dir);
-  return dir;
+  return test::fresh_temp_dir(name);
 }
 
 int count_png(const std::filesystem::path& dir) {

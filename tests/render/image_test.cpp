@@ -1,4 +1,5 @@
 #include "lib/render/image.hpp"
+#include "tests/test_temp_dir.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ using ::testing::HasSubstr;
 TEST(WritePng, WritesAFileThatReadsBackWithTheSameSizeAndPixels) {
   Image image{6, 4, std::vector<std::uint8_t>(6 * 4 * 3)};
   for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<std::uint8_t>(i);
-  const fs::path file = fs::path(::testing::TempDir()) / "tissu_write_png_test.png";
+  const fs::path file = test::fresh_temp_dir("png") / "tissu_write_png_test.png";
   fs::remove(file);
   write_png(file, image);
   int width = 0, height = 0, channels = 0;

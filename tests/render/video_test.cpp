@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lib/render/image.hpp"
+#include "tests/test_temp_dir.hpp"
 
 namespace tissu {
 namespace {
@@ -20,10 +21,7 @@ using ::testing::HasSubstr;
 /// A fresh directory for the running test.
 fs::path test_dir() {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / "tissu_video" / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return test::fresh_temp_dir(std::string("video/") + info->name());
 }
 
 /// Writes `count` 64 x 48 frames of a square moving right into `dir`.
