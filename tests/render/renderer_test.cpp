@@ -9,12 +9,6 @@
 
 #include "render_test_support.hpp"
 
-/// Under -DTISSU_SANITIZE=ON: Mesa's OSMesa keeps a few hundred bytes per context it made
-/// (allocated in OSMesaMakeCurrent) until the process ends; they are not the renderer's leaks.
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libOSMesa.so\n";
-}
-
 namespace tissu {
 namespace {
 
