@@ -26,6 +26,20 @@ void check_state_size(const SpringModel& model, const State& state) {
 
 }  // namespace
 
+const char* to_string(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::symplectic_euler:
+      return "symplectic_euler";
+    case Integrator::position_verlet:
+      return "position_verlet";
+    case Integrator::implicit_euler:
+      return "implicit_euler";
+    case Integrator::projective_dynamics:
+      return "projective_dynamics";
+  }
+  return "unknown";
+}
+
 const char* to_string(PdGlobalSolver solver) {
   switch (solver) {
     case PdGlobalSolver::direct:

@@ -16,6 +16,9 @@ enum class StepStatus {
 
 const char* to_string(StepStatus status);
 
+/// The scenario name of an integrator ("implicit_euler", "projective_dynamics", ...).
+const char* to_string(Integrator integrator);
+
 /// The scenario name of a Projective Dynamics global solver ("direct", "colored_gauss_seidel",
 /// ...).
 const char* to_string(PdGlobalSolver solver);

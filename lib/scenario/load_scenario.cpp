@@ -43,25 +43,23 @@ void apply_override(nlohmann::json& root, const std::string& assignment, const s
   *node = std::move(value);
 }
 
-Integrator read_integrator(JsonObjectReader& simulation) {
-  const std::string name = simulation.choice_or(
-      "integrator", "implicit_euler",
-      {"symplectic_euler", "position_verlet", "implicit_euler", "projective_dynamics"});
-  return name == "symplectic_euler"      ? Integrator::symplectic_euler
-         : name == "position_verlet"     ? Integrator::position_verlet
-         : name == "projective_dynamics" ? Integrator::projective_dynamics
-                                         : Integrator::implicit_euler;
+/// One of `values`, named in the scenario by to_string(value).
+template <class Enum>
+Enum read_named(JsonObjectReader& section, std::string_view key, Enum fallback,
+                const std::vector<Enum>& values) {
+  std::vector<std::string> names;
+  for (Enum value : values) names.push_back(to_string(value));
+  const std::string name = section.choice_or(key, to_string(fallback), names);
+  return values[std::find(names.begin(), names.end(), name) - names.begin()];
 }
 
 /// The "pd" object of "simulation": Projective Dynamics' global solver and iterations.
 ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
   ProjectiveDynamicsOptions o;
-  // in PdGlobalSolver's order
-  const std::vector<std::string> solvers = {"direct", "jacobi", "chebyshev", "gauss_seidel",
-                                            "colored_gauss_seidel"};
-  const std::string solver = pd.choice_or("global_solver", "direct", solvers);
-  o.global_solver = static_cast<PdGlobalSolver>(std::find(solvers.begin(), solvers.end(), solver) -
-                                                solvers.begin());
+  o.global_solver =
+      read_named(pd, "global_solver", o.global_solver,
+                 {PdGlobalSolver::direct, PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
+                  PdGlobalSolver::gauss_seidel, PdGlobalSolver::colored_gauss_seidel});
   o.iterations = pd.integer_or("iterations", o.iterations, 1, 100000);
   o.linear_iterations = pd.integer_or("linear_iterations", o.linear_iterations, 1, 100000);
   o.tolerance = pd.number_or("tolerance", o.tolerance, between(0.0, 1.0, ""));
@@ -72,7 +70,9 @@ ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
 }
 
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
-  s.solver.integrator = read_integrator(simulation);
+  s.solver.integrator = read_named(simulation, "integrator", Integrator::implicit_euler,
+                                   {Integrator::symplectic_euler, Integrator::position_verlet,
+                                    Integrator::implicit_euler, Integrator::projective_dynamics});
   s.frames = simulation.integer("frames", 1, 10'000'000);
   s.frame_rate = simulation.number_or("frame_rate", 30.0, positive(" (frames per second)"));
   if (simulation.has("substeps") && simulation.has("time_step")) {

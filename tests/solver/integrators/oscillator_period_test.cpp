@@ -87,17 +87,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, OscillatorPeriod,
                                          Integrator::implicit_euler,
                                          Integrator::projective_dynamics),
                          [](const testing::TestParamInfo<Integrator>& info) {
-                           switch (info.param) {
-                             case Integrator::symplectic_euler:
-                               return "symplectic_euler";
-                             case Integrator::position_verlet:
-                               return "position_verlet";
-                             case Integrator::implicit_euler:
-                               return "implicit_euler";
-                             case Integrator::projective_dynamics:
-                               return "projective_dynamics";
-                           }
-                           return "unknown";
+                           return std::string(to_string(info.param));
                          });
 
 // |x(T) - x_exact(T)| after T = 1 s, x_exact = l0 + A cos(omega t) (m)
