@@ -106,6 +106,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     }
     if (render.enabled && frame % render.every == 0) to_render.push_back(snapshot(lcc));
     if (options.on_frame) options.on_frame(row);
+    if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
   record(0, 0.0, 0, Adaptation{});
 

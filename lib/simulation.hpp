@@ -10,6 +10,7 @@
 
 #include "lib/frame_stats.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "lib/shape_distance.hpp"
 
 namespace tissu {
 
@@ -18,6 +19,8 @@ struct RunOptions {
   std::optional<int> frames;                 ///< overrides the scenario's frame count
   std::function<void(const FrameStats&)> on_frame;  ///< called after each frame, e.g. progress
   std::function<void(int, int)> on_image;  ///< called with (done, total) after each rendered image
+  /// when set, called with the frame number and the cloth's surface after each frame, frame 0 too
+  std::function<void(int, const MaterialSurface&)> on_surface;
 };
 
 struct RunResult {

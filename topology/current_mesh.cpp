@@ -18,4 +18,13 @@ IndexedMesh current_mesh(const ClothComplex& lcc) {
   return mesh;
 }
 
+std::vector<Eigen::Vector3d> rest_positions(const ClothComplex& lcc) {
+  std::vector<Eigen::Vector3d> rest_m(lcc.vertex_attributes().size());
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& r = v->info().rest_position;
+    rest_m.at(v->info().particle_index) = Eigen::Vector3d(r.x(), r.y(), r.z());
+  }
+  return rest_m;
+}
+
 }  // namespace tissu

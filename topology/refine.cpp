@@ -35,6 +35,30 @@ Dart_handle edge_key(ClothComplex& lcc, Dart_handle d) {
   return lcc.is_free<2>(d) ? d : std::min(d, lcc.opposite<2>(d));
 }
 
+/// Bisects the edge of `edge`, the longest of its triangle, without degrading the triangle across
+/// it: if the edge is not the longest of that neighbour too, the neighbour is bisected first at
+/// its own longest edge, recursively along the longest-edge propagation path (Rivara 1997,
+/// "New longest-edge algorithms for the refinement and/or improvement of unstructured
+/// triangulations", IJNME 40). Lengths grow strictly along the path, so it ends; every triangle is
+/// then cut at its longest edge, which keeps its smallest angle at least half the smallest initial
+/// one (Rosenberg & Stenger 1975) and, on a grid of right isosceles triangles, every triangle
+/// similar to them. Counts the splits in `splits`; returns false when the particle cap stopped it.
+bool bisect_along_longest_edge_path(ClothComplex& lcc, Dart_handle edge, std::size_t particle_cap,
+                                    const SpringSettings& settings, int& splits) {
+  while (!lcc.is_free<2>(edge)) {
+    const Dart_handle neighbours_longest = longest_edge(lcc, lcc.opposite<2>(edge));
+    // a tie counts as longest: equal lengths cannot grow along the path
+    if (rest_length_m(lcc, neighbours_longest) <= rest_length_m(lcc, edge) * (1.0 + 1e-12)) break;
+    if (!bisect_along_longest_edge_path(lcc, neighbours_longest, particle_cap, settings, splits)) {
+      return false;
+    }
+  }
+  if (lcc.vertex_attributes().size() >= particle_cap) return false;
+  split_edge(lcc, edge, settings);
+  ++splits;
+  return true;
+}
+
 bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
   return (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
          (o.curvature_threshold_rad > 0.0 &&
@@ -60,7 +84,9 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
                         const SpringSettings& settings) {
   RefinementReport report;
-  std::vector<Dart_handle> to_split;  // in traversal order, so that runs are reproducible
+  // the longest edge of each triangle next to an edge over a threshold, in traversal order so
+  // that runs are reproducible, each with its far end to notice when a propagation split it
+  std::vector<std::pair<Dart_handle, Vertex_handle>> to_split;
   std::set<Dart_handle> queued;
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     if (!over_threshold(lcc, d, options)) continue;
@@ -69,16 +95,16 @@ RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
     if (!lcc.is_free<2>(d)) sides.push_back(lcc.opposite<2>(d));
     for (Dart_handle side : sides) {
       const Dart_handle longest = longest_edge(lcc, side);
-      if (rest_length_m(lcc, longest) >= 2.0 * options.min_edge_length_m) {
-        if (queued.insert(edge_key(lcc, longest)).second) to_split.push_back(longest);
+      if (rest_length_m(lcc, longest) >= 2.0 * options.min_edge_length_m &&
+          queued.insert(edge_key(lcc, longest)).second) {
+        to_split.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
       }
     }
   }
-  // splitting one edge leaves every other edge an edge between triangles: the list stays valid
-  for (Dart_handle edge : to_split) {
-    if (static_cast<int>(lcc.vertex_attributes().size()) >= options.max_particles) break;
-    split_edge(lcc, edge, settings);
-    ++report.splits;
+  const auto particle_cap = static_cast<std::size_t>(options.max_particles);
+  for (const auto& [edge, far_end] : to_split) {
+    if (lcc.vertex_attribute(lcc.next(edge)) != far_end) continue;  // already bisected on a path
+    if (!bisect_along_longest_edge_path(lcc, edge, particle_cap, settings, report.splits)) break;
   }
   return report;
 }

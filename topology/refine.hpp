@@ -15,10 +15,11 @@ double edge_strain(const ClothComplex& lcc, Dart_const_handle dart);
 double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle dart);
 
 /// Finds the edges over a threshold of `options`, then bisects the longest rest-space edge of
-/// each triangle next to one of them (Rivara's longest-edge bisection: triangles never get worse
-/// than half their smallest angle, and the mesh stays conforming), skipping edges shorter than
-/// twice min_edge_length_m and stopping at max_particles. Masses, rest areas and springs are
-/// updated locally after each split (split_edge). Triangle cloths only.
+/// each triangle next to one of them, skipping edges shorter than twice min_edge_length_m and
+/// stopping at max_particles. A bisection first bisects the neighbour across the edge when the
+/// edge is not its longest too (Rivara's longest-edge propagation path), so the mesh stays
+/// conforming and no triangle gets worse than half the smallest initial angle. Masses, rest areas
+/// and springs are updated locally after each split (split_edge). Triangle cloths only.
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
                         const SpringSettings& settings);
 

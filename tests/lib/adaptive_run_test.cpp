@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "lib/scenario/scenario.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
 #include "tests/test_temp_dir.hpp"
@@ -84,6 +86,75 @@ TEST(AdaptiveRun, ScenarioChecksTheAdaptiveSection) {
   EXPECT_THAT(error_of({"cloth.grid.cells=quads"}),
               HasSubstr("adaptive: refinement needs a triangle cloth"));
   EXPECT_EQ(error_of({"adaptive.enabled=false", "cloth.grid.cells=quads"}), "no error");
+}
+
+/// Per face, the sharpest bend to a neighbour: the angle between their normals over the rest
+/// distance between their centroids (1/m, the inverse of the fold's radius).
+std::vector<double> sharpest_bend_per_m(const MaterialSurface& s) {
+  const std::vector<std::vector<int>>& faces = s.current.faces;
+  std::vector<Eigen::Vector3d> normal, centroid_m;
+  for (const std::vector<int>& f : faces) {
+    const std::vector<Eigen::Vector3d>& x = s.current.vertices;
+    normal.push_back((x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized());
+    centroid_m.push_back((s.rest_m[f[0]] + s.rest_m[f[1]] + s.rest_m[f[2]]) / 3.0);
+  }
+  std::map<std::pair<int, int>, int> face_of_edge;
+  std::vector<double> bend(faces.size(), 0.0);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const int a = faces[i][k], b = faces[i][(k + 1) % 3];
+      const auto twin = face_of_edge.find({b, a});
+      if (twin == face_of_edge.end()) {
+        face_of_edge[{a, b}] = static_cast<int>(i);
+        continue;
+      }
+      const int j = twin->second;
+      const double angle = std::acos(std::clamp(normal[i].dot(normal[j]), -1.0, 1.0));
+      const double per_m = angle / (centroid_m[i] - centroid_m[j]).norm();
+      bend[i] = std::max(bend[i], per_m);
+      bend[j] = std::max(bend[j], per_m);
+    }
+  }
+  return bend;
+}
+
+double rest_area_m2(const MaterialSurface& s, const std::vector<int>& f) {
+  return 0.5 * (s.rest_m[f[1]] - s.rest_m[f[0]]).cross(s.rest_m[f[2]] - s.rest_m[f[0]]).norm();
+}
+
+TEST(AdaptiveRun, TheCurtainDemoRefinesItsFoldsAndKeepsItsMass) {
+  const Scenario scenario =
+      load_scenario(TISSU_DATA_DIR "/scenarios/curtain.json",
+                    {"simulation.frames=8", "render.enabled=false", "output.meshes=false"});
+  ASSERT_TRUE(scenario.adaptive.enabled);
+  RunOptions options;
+  options.output_dir = test::fresh_temp_dir("adaptive_curtain");
+  MaterialSurface last;
+  options.on_surface = [&](int, const MaterialSurface& s) { last = s; };
+  ASSERT_TRUE(run_scenario(scenario, options).ok);
+
+  const Column stats = read_stats(options.output_dir / "stats.csv");
+  const double expected_kg = 0.2 * 2.0 * 2.4;
+  for (double kg : stats.total_mass_kg) EXPECT_NEAR(kg, expected_kg, 1e-12 * expected_kg);
+  // particle counts rise as the folds refine and fall where they relax
+  EXPECT_GT(*std::max_element(stats.particles.begin(), stats.particles.end()),
+            4 * stats.particles.front());
+  EXPECT_TRUE(std::adjacent_find(stats.particles.begin(), stats.particles.end(),
+                                 std::greater<int>()) != stats.particles.end());
+
+  // cells in folds tighter than 20 cm in radius are smaller than cells where it is nearly flat
+  const std::vector<double> bend = sharpest_bend_per_m(last);
+  double folded_m2 = 0.0, flat_m2 = 0.0;
+  int folded = 0, flat = 0;
+  for (std::size_t i = 0; i < bend.size(); ++i) {
+    const double area_m2 = rest_area_m2(last, last.current.faces[i]);
+    if (bend[i] > 5.0) folded_m2 += area_m2, ++folded;
+    if (bend[i] < 1.0) flat_m2 += area_m2, ++flat;
+  }
+  ASSERT_GT(folded, 0);
+  ASSERT_GT(flat, 0);
+  EXPECT_LT(folded_m2 / folded, 0.5 * flat_m2 / flat)
+      << folded << " folded faces, " << flat << " flat ones";
 }
 
 }  // namespace

@@ -101,5 +101,40 @@ TEST_F(RefineTest, RepeatedPassesStopAtTheMinimumEdgeLengthAndTheParticleCap) {
   EXPECT_EQ(lcc.vertex_attributes().size(), 150u);
 }
 
+/// The smallest angle of the triangle of `d` in rest space (radians).
+double smallest_rest_angle(const ClothComplex& lcc, Dart_const_handle d) {
+  std::vector<Point3> corners;
+  for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
+    corners.push_back(lcc.vertex_attribute(e)->info().rest_position);
+  }
+  double smallest = M_PI;
+  for (int i = 0; i < 3; ++i) {
+    const Vector3 u = corners[(i + 1) % 3] - corners[i];
+    const Vector3 w = corners[(i + 2) % 3] - corners[i];
+    smallest =
+        std::min(smallest, std::acos(u * w / std::sqrt(u.squared_length() * w.squared_length())));
+  }
+  return smallest;
+}
+
+TEST_F(RefineTest, LongestEdgePropagationKeepsRightIsoscelesTrianglesSimilar) {
+  // square cells of 0.1 m: every initial triangle is right isosceles (smallest angle 45 degrees);
+  // bisecting a leg instead of a hypotenuse would make a 26.6-degree corner
+  options = test::grid(15, 9, GridCells::triangles);
+  lcc.clear();
+  build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
+  stretch_right_part(1.0, 1.2);
+  RefinementOptions refinement;
+  refinement.strain_threshold = 0.05;
+  refinement.min_edge_length_m = 0.01;
+  int splits = 0;
+  for (int pass = 0; pass < 4; ++pass) splits += refine(lcc, refinement, springs).splits;
+  EXPECT_GT(splits, 100);
+  expect_valid_and_mass_conserved();
+  for (auto f = lcc.one_dart_per_cell<2>().begin(); f != lcc.one_dart_per_cell<2>().end(); ++f) {
+    EXPECT_NEAR(smallest_rest_angle(lcc, f), M_PI / 4.0, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace tissu

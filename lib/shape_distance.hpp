@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// How far apart two runs of the same cloth are, whatever their meshes: the same material point is
+/// found on both and its current positions compared. CGAL-free.
+
+#include <vector>
+
+#include "topology/indexed_mesh.hpp"
+
+namespace tissu {
+
+/// A cloth surface at one instant with the material (rest) coordinates of each vertex.
+struct MaterialSurface {
+  IndexedMesh current;                  ///< current positions (m); triangles or quads
+  std::vector<Eigen::Vector3d> rest_m;  ///< #V material coordinates (m), the same vertex order
+};
+
+struct ShapeDistance {
+  double mean_m = 0.0;  ///< mean over the compared points (m)
+  double max_m = 0.0;   ///< largest (m)
+  int points = 0;       ///< vertices of the reference compared
+};
+
+/// For every vertex of `reference`, the distance between its current position and the current
+/// position of the same material point on `other`: the point is located on the nearest of
+/// `other`'s triangles in rest space (quads are split along their first diagonal) and its position
+/// interpolated barycentrically. Both surfaces must share their rest space (the same cloth at two
+/// resolutions). Throws std::invalid_argument when `other` has no face or the sizes disagree.
+ShapeDistance material_point_distance(const MaterialSurface& other,
+                                      const MaterialSurface& reference);
+
+}  // namespace tissu

@@ -1,0 +1,81 @@
+// Comparing two runs of one cloth at different resolutions through their material points.
+
+#include "lib/shape_distance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "topology/grid_mesh.hpp"
+
+namespace tissu {
+namespace {
+
+/// A flat 1 m x 0.5 m sheet on `cells` x `cells` cells, its current shape given by `shape`.
+template <class Shape>
+MaterialSurface sheet(int cells, GridCells kind, Shape shape) {
+  GridOptions o;
+  o.width = 1.0;
+  o.height = 0.5;
+  o.cells_u = cells;
+  o.cells_v = cells;
+  o.cells = kind;
+  MaterialSurface s{make_grid_mesh(o), {}};
+  s.rest_m = s.current.vertices;
+  for (Eigen::Vector3d& x : s.current.vertices) x = shape(x);
+  return s;
+}
+
+Eigen::Vector3d sheared_and_lifted(const Eigen::Vector3d& X) {
+  // an affine map: reproduced exactly by any mesh's piecewise-linear interpolation
+  return Eigen::Vector3d(1.1 * X.x() + 0.3 * X.z(), 0.2 * X.x() + 0.05, 0.9 * X.z());
+}
+
+Eigen::Vector3d bulged(const Eigen::Vector3d& X) {
+  return X + Eigen::Vector3d(0.0, 0.1 * std::sin(M_PI * X.x()), 0.0);
+}
+
+TEST(MaterialPointDistance, AnAffineShapeLooksTheSameAtEveryResolution) {
+  const MaterialSurface coarse = sheet(4, GridCells::quads, sheared_and_lifted);
+  const MaterialSurface fine = sheet(13, GridCells::triangles, sheared_and_lifted);
+  const ShapeDistance d = material_point_distance(coarse, fine);
+  EXPECT_EQ(d.points, 14 * 14);
+  EXPECT_LT(d.max_m, 1e-12);
+}
+
+TEST(MaterialPointDistance, ATranslationIsMeasuredAtEveryPoint) {
+  const MaterialSurface here = sheet(6, GridCells::triangles, sheared_and_lifted);
+  const MaterialSurface moved =
+      sheet(9, GridCells::triangles, [](const Eigen::Vector3d& X) -> Eigen::Vector3d {
+        return sheared_and_lifted(X) + Eigen::Vector3d(0.0, 0.0, 0.25);
+      });
+  const ShapeDistance d = material_point_distance(here, moved);
+  EXPECT_NEAR(d.mean_m, 0.25, 1e-12);
+  EXPECT_NEAR(d.max_m, 0.25, 1e-12);
+}
+
+TEST(MaterialPointDistance, ACoarseMeshMissesACurvedShapeByItsInterpolationError) {
+  // a sine bulge of amplitude 0.1 m sampled every 0.25 m along x: among the fine points, linear
+  // interpolation falls shortest at x = 0.375 m, between the samples at 0.25 and 0.5 m
+  const MaterialSurface coarse = sheet(4, GridCells::triangles, bulged);
+  const MaterialSurface fine = sheet(16, GridCells::triangles, bulged);
+  const ShapeDistance d = material_point_distance(coarse, fine);
+  const double shortfall_m =
+      0.1 * (std::sin(0.375 * M_PI) - 0.5 * (std::sin(0.25 * M_PI) + std::sin(0.5 * M_PI)));
+  EXPECT_NEAR(d.max_m, shortfall_m, 1e-12);
+  EXPECT_GT(d.mean_m, 0.0);
+  EXPECT_LT(d.mean_m, d.max_m);
+  EXPECT_LT(material_point_distance(fine, coarse).max_m, 1e-12);  // coarse samples lie on fine
+}
+
+TEST(MaterialPointDistance, RefusesSurfacesWithoutFacesOrRestPositions) {
+  const MaterialSurface fine = sheet(4, GridCells::triangles, bulged);
+  MaterialSurface empty;
+  EXPECT_THROW(material_point_distance(empty, fine), std::invalid_argument);
+  MaterialSurface missing_rest = fine;
+  missing_rest.rest_m.pop_back();
+  EXPECT_THROW(material_point_distance(missing_rest, fine), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tissu
