@@ -22,6 +22,7 @@ struct FrameStats {
   int unconverged_steps = 0;      ///< implicit steps whose linear solve missed its tolerance
   int splits = 0;                 ///< edges bisected by adaptive refinement after this frame
   int merges = 0;                 ///< bisections undone by adaptive coarsening after this frame
+  int contacts = 0;               ///< particle-obstacle contacts resolved in the frame's last step
 };
 
 /// Writes stats.csv: a header line, then one line per frame, flushed as it goes.

@@ -94,11 +94,12 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     result.video_warning = rendered.video_warning;
   };
 
-  auto record = [&](int frame, double step_ms, int unconverged, Adaptation changes) {
+  auto record = [&](int frame, double step_ms, int unconverged, Adaptation changes, int contacts) {
     FrameStats row =
         measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
     row.splits = changes.splits;
     row.merges = changes.merges;
+    row.contacts = contacts;
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
@@ -108,7 +109,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
-  record(0, 0.0, 0, Adaptation{});
+  record(0, 0.0, 0, Adaptation{}, 0);
 
   RunResult result;
   StepWorkspace workspace;
@@ -140,6 +141,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     const double step_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     cloth.state = std::move(next);
+    const int contacts = workspace.obstacle_contacts;
     write_back(cloth, cloth.state, lcc);
     Adaptation changes;
     if (scenario.adaptive.enabled && frame % scenario.adaptive.every == 0) {
@@ -149,7 +151,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         workspace = StepWorkspace{};
       }
     }
-    record(frame, step_ms, unconverged, changes);
+    record(frame, step_ms, unconverged, changes, contacts);
     result.frames_done = frame;
   }
   render_recorded(result);

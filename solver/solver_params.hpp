@@ -3,6 +3,9 @@
 /// Parameters of a time step: the integrator, the time step and the environment's forces.
 
 #include <Eigen/Core>
+#include <vector>
+
+#include "solver/collision/obstacle.hpp"
 
 namespace tissu {
 
@@ -86,6 +89,7 @@ struct SolverParams {
   Environment environment;
   ImplicitOptions implicit;
   ProjectiveDynamicsOptions pd;
+  std::vector<Obstacle> obstacles;  ///< kept out of after every step, whatever the integrator
 };
 
 }  // namespace tissu

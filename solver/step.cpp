@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/collision/obstacle_contacts.hpp"
 #include "solver/integrators/implicit_euler.hpp"
 #include "solver/integrators/position_verlet.hpp"
 #include "solver/integrators/projective_dynamics.hpp"
@@ -76,6 +77,7 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
 StepStatus step(const SpringModel& model, const SolverParams& params, State& state,
                 StepWorkspace& workspace) {
   check_state_size(model, state);
+  if (!params.obstacles.empty()) workspace.step_start_x = state.x;
   StepStatus status = StepStatus::ok;
   switch (params.integrator) {
     case Integrator::symplectic_euler:
@@ -91,6 +93,9 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       status = projective_dynamics_step(model, params, state, workspace);
       break;
   }
+  workspace.obstacle_contacts =
+      resolve_obstacle_contacts(model, params.obstacles, params.time_step,
+                                state.time + params.time_step, workspace.step_start_x, state);
   state.time += params.time_step;
   if (status == StepStatus::non_finite || !state.x.allFinite() || !state.v.allFinite()) {
     return StepStatus::non_finite;

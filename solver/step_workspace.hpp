@@ -16,6 +16,8 @@ struct StepWorkspace {
   Eigen::VectorXd force;            ///< 3#P total force of the last evaluation (N)
   ImplicitEulerWorkspace implicit;  ///< buffers of implicit_euler_step()
   ProjectiveDynamicsWorkspace pd;   ///< buffers and caches of projective_dynamics_step()
+  Eigen::VectorXd step_start_x;     ///< 3#P positions before the step, when there are obstacles (m)
+  int obstacle_contacts = 0;        ///< particle-obstacle contacts resolved by the last step
 };
 
 }  // namespace tissu

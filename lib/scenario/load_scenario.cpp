@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "lib/scenario/read_cloth.hpp"
+#include "lib/scenario/read_obstacles.hpp"
 #include "lib/scenario/read_render.hpp"
 #include "solver/step.hpp"
 
@@ -165,6 +166,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   s.pins = read_pins(top);
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
+  s.solver.obstacles = read_obstacles(top);
   if (top.has("adaptive")) {
     s.adaptive = read_adaptive(top.object("adaptive"));
     if (s.adaptive.enabled && s.cloth.grid && s.cloth.grid->cells == GridCells::quads) {

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "lib/scenario/scenario_error.hpp"
 
 namespace tissu {
@@ -210,10 +212,60 @@ TEST(Scenario, MissingFileIsNamed) {
 }
 
 TEST(Scenario, ShippedScenariosLoad) {
-  for (const char* name : {"curtain.json"}) {
-    const Scenario s = load_scenario(std::filesystem::path(TISSU_DATA_DIR) / "scenarios" / name);
-    EXPECT_GT(s.frames, 0) << name;
+  int scenarios = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(TISSU_DATA_DIR) / "scenarios")) {
+    const Scenario s = load_scenario(entry.path());
+    EXPECT_GT(s.frames, 0) << entry.path();
+    ++scenarios;
   }
+  EXPECT_GE(scenarios, 3);  // curtain, curtain_uniform, drape
+}
+
+TEST(Scenario, ReadsObstaclesOfEveryShape) {
+  const Scenario s = parse_scenario(minimal, "dir/s.json", {R"(obstacles=[
+      { "type": "plane", "point": [0, 0, -1], "normal": [0, 0, 2], "static_friction": 0.5 },
+      { "type": "sphere", "center": [0, 0, 1], "radius": 0.3, "thickness": 0.01,
+        "motion": { "velocity": [0, 0, -1] } },
+      { "type": "capsule", "from": [0, 0, 0], "to": [1, 0, 0], "radius": 0.1,
+        "static_friction": 0.6, "kinetic_friction": 0.4 },
+      { "type": "box", "center": [1, 2, 3], "size": [2, 4, 6],
+        "rotation": { "axis": [0, 0, 1], "angle": 1.5707963267948966 },
+        "motion": { "keyframes": [ { "time": 0, "offset": [0, 0, 0] },
+                                   { "time": 2, "offset": [0, 0, 1] } ] } } ])"});
+  const std::vector<Obstacle>& o = s.solver.obstacles;
+  ASSERT_EQ(o.size(), 4u);
+  EXPECT_EQ(o[0].shape, ObstacleShape::plane);
+  EXPECT_EQ(o[0].normal, Eigen::Vector3d(0, 0, 1));
+  EXPECT_DOUBLE_EQ(o[0].kinetic_friction, 0.5);  // defaults to the static coefficient
+  EXPECT_DOUBLE_EQ(o[1].radius_m, 0.3);
+  EXPECT_DOUBLE_EQ(o[1].thickness_m, 0.01);
+  EXPECT_EQ(o[1].motion.velocity, Eigen::Vector3d(0, 0, -1));
+  EXPECT_EQ(o[2].axis_end, Eigen::Vector3d(1, 0, 0));
+  EXPECT_DOUBLE_EQ(o[2].kinetic_friction, 0.4);
+  EXPECT_EQ(o[3].half_extents_m, Eigen::Vector3d(1, 2, 3));
+  EXPECT_TRUE((o[3].rotation * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_TRUE(o[3].motion.offset_m(1.0).isApprox(Eigen::Vector3d(0, 0, 0.5)));
+}
+
+TEST(Scenario, BadObstaclesAreNamed) {
+  EXPECT_THAT(with("obstacles", R"([{ "type": "cone" }])"),
+              HasSubstr("dir/s.json: obstacles[0].type: expected one of"));
+  EXPECT_THAT(with("obstacles", R"([{ "type": "sphere", "center": [0, 0, 0] }])"),
+              HasSubstr("obstacles[0].radius: missing; expected a positive number (m)"));
+  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "radius": 1 }])"),
+              HasSubstr("obstacles[0].radius: unknown key"));
+  EXPECT_THAT(
+      with("obstacles",
+           R"([{ "type": "plane", "static_friction": 0.2, "kinetic_friction": 0.3 }])"),
+      HasSubstr("obstacles[0].kinetic_friction: expected a number between 0 and 0.2 (at most "
+                "static_friction)"));
+  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "motion": { "keyframes": [
+                  { "time": 1, "offset": [0, 0, 0] }, { "time": 1, "offset": [0, 0, 1] } ] } }])"),
+              HasSubstr("obstacles[0].motion.keyframes[1].time: expected a time after the "
+                        "previous keyframe's"));
+  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "normal": [0, 0, 0] }])"),
+              HasSubstr("obstacles[0].normal: expected"));
 }
 
 }  // namespace

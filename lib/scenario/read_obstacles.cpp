@@ -1,0 +1,79 @@
+#include "lib/scenario/read_obstacles.hpp"
+
+#include <Eigen/Geometry>
+#include <limits>
+
+namespace tissu {
+namespace {
+
+ObstacleMotion read_motion(JsonObjectReader motion) {
+  ObstacleMotion m;
+  m.velocity = motion.vector3_or("velocity", m.velocity);
+  if (motion.has("keyframes")) {
+    for (const auto& [element, path] : motion.array("keyframes")) {
+      JsonObjectReader key = object_reader(*element, motion.file(), path);
+      const double time_s = key.number("time", non_negative(" (s)"));
+      if (!m.key_times_s.empty() && time_s <= m.key_times_s.back()) {
+        key.fail("time", "a time after the previous keyframe's " +
+                             std::to_string(m.key_times_s.back()) + " s");
+      }
+      m.key_times_s.push_back(time_s);
+      m.key_offsets_m.push_back(key.vector3("offset"));
+      key.finish();
+    }
+  }
+  motion.finish();
+  return m;
+}
+
+Eigen::Matrix3d read_rotation(JsonObjectReader rotation) {
+  const Eigen::Vector3d axis = rotation.direction_or("axis", Eigen::Vector3d::UnitZ());
+  const double angle_rad = rotation.number("angle", {});
+  rotation.finish();
+  return Eigen::AngleAxisd(angle_rad, axis).toRotationMatrix();
+}
+
+Obstacle read_obstacle(JsonObjectReader o) {
+  Obstacle ob;
+  const std::string type = o.choice("type", {"plane", "sphere", "capsule", "box"});
+  if (type == "plane") {
+    ob.shape = ObstacleShape::plane;
+    ob.position = o.vector3_or("point", ob.position);
+    ob.normal = o.direction_or("normal", ob.normal);
+  } else if (type == "sphere") {
+    ob.shape = ObstacleShape::sphere;
+    ob.position = o.vector3("center");
+    ob.radius_m = o.number("radius", positive(" (m)"));
+  } else if (type == "capsule") {
+    ob.shape = ObstacleShape::capsule;
+    ob.position = o.vector3("from");
+    ob.axis_end = o.vector3("to");
+    ob.radius_m = o.number("radius", positive(" (m)"));
+  } else {
+    ob.shape = ObstacleShape::box;
+    ob.position = o.vector3("center");
+    const std::vector<double> size = o.numbers("size", 3, positive(" (m)"));
+    ob.half_extents_m = 0.5 * Eigen::Vector3d(size[0], size[1], size[2]);
+    if (o.has("rotation")) ob.rotation = read_rotation(o.object("rotation"));
+  }
+  ob.thickness_m = o.number_or("thickness", ob.thickness_m, non_negative(" (m)"));
+  ob.static_friction = o.number_or("static_friction", 0.0, non_negative(""));
+  ob.kinetic_friction = o.number_or("kinetic_friction", ob.static_friction,
+                                    between(0.0, ob.static_friction, " (at most static_friction)"));
+  if (o.has("motion")) ob.motion = read_motion(o.object("motion"));
+  o.finish();
+  return ob;
+}
+
+}  // namespace
+
+std::vector<Obstacle> read_obstacles(JsonObjectReader& top) {
+  std::vector<Obstacle> obstacles;
+  if (!top.has("obstacles")) return obstacles;
+  for (const auto& [element, path] : top.array("obstacles")) {
+    obstacles.push_back(read_obstacle(object_reader(*element, top.file(), path)));
+  }
+  return obstacles;
+}
+
+}  // namespace tissu

@@ -1,0 +1,82 @@
+#include "solver/collision/obstacle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tissu {
+namespace {
+
+/// The normal given where every direction is as near (the centre of a sphere, a capsule's axis).
+const Eigen::Vector3d fallback_normal = Eigen::Vector3d::UnitZ();
+
+SurfaceDistance from_core(const Eigen::Vector3d& x, const Eigen::Vector3d& core, double radius_m) {
+  const Eigen::Vector3d out = x - core;
+  const double r = out.norm();
+  return {r - radius_m, r > 0.0 ? Eigen::Vector3d(out / r) : fallback_normal};
+}
+
+Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a,
+                                   const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+SurfaceDistance box_distance(const Obstacle& box, const Eigen::Vector3d& centre,
+                             const Eigen::Vector3d& x) {
+  const Eigen::Vector3d q = box.rotation.transpose() * (x - centre);  // in the box's frame
+  const Eigen::Vector3d beyond = q.cwiseAbs() - box.half_extents_m;   // > 0: outside that slab
+  if ((beyond.array() > 0.0).any()) {
+    const Eigen::Vector3d gap = beyond.cwiseMax(0.0).cwiseProduct(q.cwiseSign());
+    return {gap.norm(), box.rotation * gap.normalized()};
+  }
+  // inside: out through the nearest face
+  Eigen::Index axis = 0;
+  const double depth = beyond.maxCoeff(&axis);
+  Eigen::Vector3d local = Eigen::Vector3d::Zero();
+  local[axis] = q[axis] < 0.0 ? -1.0 : 1.0;
+  return {depth, box.rotation * local};
+}
+
+}  // namespace
+
+Eigen::Vector3d ObstacleMotion::offset_m(double time_s) const {
+  Eigen::Vector3d offset = velocity * time_s;
+  if (key_times_s.empty()) return offset;
+  const auto after = std::upper_bound(key_times_s.begin(), key_times_s.end(), time_s);
+  if (after == key_times_s.begin()) return offset + key_offsets_m.front();
+  if (after == key_times_s.end()) return offset + key_offsets_m.back();
+  const std::size_t k = after - key_times_s.begin();
+  const double s = (time_s - key_times_s[k - 1]) / (key_times_s[k] - key_times_s[k - 1]);
+  return offset + (1.0 - s) * key_offsets_m[k - 1] + s * key_offsets_m[k];
+}
+
+Eigen::Vector3d ObstacleMotion::velocity_at(double time_s) const {
+  if (key_times_s.empty()) return velocity;
+  const auto after = std::upper_bound(key_times_s.begin(), key_times_s.end(), time_s);
+  if (after == key_times_s.begin() || after == key_times_s.end()) return velocity;
+  const std::size_t k = after - key_times_s.begin();
+  return velocity +
+         (key_offsets_m[k] - key_offsets_m[k - 1]) / (key_times_s[k] - key_times_s[k - 1]);
+}
+
+SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
+                                 double time_s) {
+  const Eigen::Vector3d offset = obstacle.motion.offset_m(time_s);
+  const Eigen::Vector3d position = obstacle.position + offset;
+  switch (obstacle.shape) {
+    case ObstacleShape::plane:
+      return {(x - position).dot(obstacle.normal), obstacle.normal};
+    case ObstacleShape::sphere:
+      return from_core(x, position, obstacle.radius_m);
+    case ObstacleShape::capsule:
+      return from_core(x, nearest_on_segment(x, position, obstacle.axis_end + offset),
+                       obstacle.radius_m);
+    case ObstacleShape::box:
+      return box_distance(obstacle, position, x);
+  }
+  return {};
+}
+
+}  // namespace tissu

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Rigid obstacles the cloth cannot enter: analytic shapes, their motion and their distance
+/// field. CGAL-free.
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace tissu {
+
+enum class ObstacleShape {
+  plane,    ///< the half-space below a plane (a floor)
+  sphere,   ///< a ball
+  capsule,  ///< the points within a radius of a segment
+  box,      ///< a box, rotated or not
+};
+
+/// A translation that follows keyframes, linear between them and held after the last, plus a
+/// constant drift: offset(t) = keyframes(t) + velocity t.
+struct ObstacleMotion {
+  std::vector<double> key_times_s;                     ///< increasing; empty: no keyframes
+  std::vector<Eigen::Vector3d> key_offsets_m;          ///< one per key time
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< constant drift (m/s)
+
+  Eigen::Vector3d offset_m(double time_s) const;
+  Eigen::Vector3d velocity_at(double time_s) const;  ///< d offset / dt (m/s)
+};
+
+struct Obstacle {
+  ObstacleShape shape = ObstacleShape::plane;
+  /// plane: a point on it; sphere and box: the centre; capsule: one end of its axis (m), at t = 0
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal{0.0, 0.0, 1.0};                     ///< plane: unit, pointing outside
+  Eigen::Vector3d axis_end = Eigen::Vector3d::Zero();        ///< capsule: the other end (m)
+  double radius_m = 0.0;                                     ///< sphere and capsule
+  Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();  ///< box, along its own axes
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();    ///< box: its axes as columns
+  /// particles are kept at least this far outside the surface (m): the cloth's half thickness
+  double thickness_m = 0.005;
+  double static_friction = 0.0;   ///< mu_s: sticks while |v_t| <= mu_s dv_n
+  double kinetic_friction = 0.0;  ///< mu_k: otherwise |v_t| loses mu_k dv_n
+  ObstacleMotion motion;
+};
+
+/// The nearest point of an obstacle's surface to a point.
+struct SurfaceDistance {
+  double distance_m = 0.0;                            ///< signed: negative inside
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, outwards, at the nearest point
+};
+
+/// Signed distance from `x` (m) to the surface of `obstacle` at time `time_s`, and the outward
+/// normal there. Where the normal is not unique (the centre of a sphere, the axis of a capsule,
+/// the centre of a box) one of the candidates is returned.
+SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x, double time_s);
+
+}  // namespace tissu

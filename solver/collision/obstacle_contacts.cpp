@@ -1,0 +1,83 @@
+#include "solver/collision/obstacle_contacts.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "solver/parallel.hpp"
+
+namespace tissu {
+namespace {
+
+/// Where a particle moving from `from` to `to` during the step first comes within the thickness of
+/// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
+/// sphere tracing (Hart 1996) along the segment, each advance by the distance to the surface, which
+/// cannot overshoot it. The obstacle is taken where it is at the end of the step.
+std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
+                                                     const Eigen::Vector3d& from,
+                                                     const Eigen::Vector3d& to, double time_s) {
+  const double length_m = (to - from).norm();
+  if (!(length_m > 0.0) ||
+      surface_distance(obstacle, from, time_s).distance_m < obstacle.thickness_m) {
+    return std::nullopt;  // not moving, or leaving a contact it started in
+  }
+  double travelled = 0.0;  // fraction of the path
+  for (int step = 0; step < 64; ++step) {
+    const Eigen::Vector3d here = from + travelled * (to - from);
+    const double clearance_m =
+        surface_distance(obstacle, here, time_s).distance_m - obstacle.thickness_m;
+    if (clearance_m <= 1e-9 * length_m) return here;
+    travelled += clearance_m / length_m;
+    if (travelled >= 1.0) return std::nullopt;
+  }
+  return from + travelled * (to - from);  // still creeping along the surface: call it a contact
+}
+
+/// One obstacle against one particle that moved from `from` during the step; true if they touched.
+bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vector3d& from,
+             Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v) {
+  SurfaceDistance surface = surface_distance(obstacle, x, time_s);
+  if (surface.distance_m >= obstacle.thickness_m) {
+    const std::optional<Eigen::Vector3d> contact = first_contact_on_path(obstacle, from, x, time_s);
+    if (!contact) return false;
+    x = *contact;
+    surface = surface_distance(obstacle, x, time_s);
+  }
+  const Eigen::Vector3d& n = surface.normal;
+  x += std::max(0.0, obstacle.thickness_m - surface.distance_m) * n;
+
+  const Eigen::Vector3d v_obstacle = obstacle.motion.velocity_at(time_s);
+  const Eigen::Vector3d relative = v - v_obstacle;
+  const double v_n = relative.dot(n);
+  if (v_n >= 0.0) return true;  // already leaving
+  const double dv_n = -v_n;
+  const Eigen::Vector3d v_t = relative - v_n * n;
+  const double speed_t = v_t.norm();
+  const Eigen::Vector3d v_t_after =
+      speed_t <= obstacle.static_friction * dv_n
+          ? Eigen::Vector3d::Zero()
+          : Eigen::Vector3d(std::max(0.0, 1.0 - obstacle.kinetic_friction * dv_n / speed_t) * v_t);
+  v = v_obstacle + v_t_after;
+  x += h * (v_t_after - v_t);
+  return true;
+}
+
+}  // namespace
+
+int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
+                              double time_step_s, double time_s, const Eigen::VectorXd& start_x,
+                              State& state) {
+  if (obstacles.empty()) return 0;
+  const int particles = model.particle_count();
+  int contacts = 0;
+#pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
+  for (int p = 0; p < particles; ++p) {
+    if (model.pinned[p]) continue;
+    for (const Obstacle& obstacle : obstacles) {
+      contacts += resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
+                          state.x.segment<3>(3 * p), state.v.segment<3>(3 * p));
+    }
+  }
+  return contacts;
+}
+
+}  // namespace tissu

@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Keeps the cloth outside the obstacles after each step, with Coulomb friction. CGAL-free.
+
+#include <vector>
+
+#include "solver/collision/obstacle.hpp"
+#include "solver/spring_model.hpp"
+
+namespace tissu {
+
+/// Projects every free particle that ended step h within an obstacle's thickness back out to it,
+/// after the integrator, whichever it is (a velocity-level impulse response as in Bridson, Fedkiw
+/// & Anderson 2002, section 7.2, applied to particles against rigid obstacles):
+/// - position: moved along the outward normal n to distance thickness; this adds no velocity,
+///   so resolving a contact never adds energy;
+/// - velocity relative to the obstacle, v_r = v - v_obstacle: an approaching normal part
+///   v_n = v_r . n < 0 is removed (inelastic contact), an impulse dv_n = -v_n per unit mass;
+/// - friction on the tangential part v_t (Coulomb): it stops if |v_t| <= mu_s dv_n (static),
+///   else loses mu_k dv_n of its length, down to zero (kinetic); the position then moves by h times
+///   the change of v_t, so that x_{n+1} - x_n = h v_{n+1} holds along the surface as it does in the
+///   integrator. A particle on a slope of angle a then sticks when tan a <= mu_s and otherwise
+///   accelerates at g (sin a - mu_k cos a), as Coulomb's law says.
+/// A particle whose step ends clear of an obstacle but whose path from `start_x` crossed it (a
+/// thin obstacle or a fast particle) is stopped where the path first touches it, then treated the
+/// same way: no tunnelling. Obstacles are resolved one after the other, at their position at
+/// `time_s` (the end of the step). Pinned particles are left alone. Returns the number of contacts.
+int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
+                              double time_step_s, double time_s, const Eigen::VectorXd& start_x,
+                              State& state);
+
+}  // namespace tissu

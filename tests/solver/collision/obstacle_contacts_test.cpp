@@ -1,0 +1,162 @@
+// Particles against obstacles: resting, sliding with Coulomb friction, not tunnelling.
+
+#include "solver/collision/obstacle_contacts.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/step.hpp"
+
+namespace tissu {
+namespace {
+
+constexpr double g = 9.81;  // m/s^2
+
+/// One free particle of 10 g at `x`, moving at `v`.
+SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d& v, State& state) {
+  SpringModel model;
+  model.mass = Eigen::VectorXd::Constant(1, 0.01);
+  model.pinned.assign(1, 0);
+  model.springs.resize(0, 2);
+  finalize_model(model);
+  state.x = x;
+  state.v = v;
+  return model;
+}
+
+/// A plane through the origin tilted by `slope_rad` about x, rising towards +y.
+Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
+  Obstacle plane;
+  plane.normal = Eigen::Vector3d(0.0, -std::sin(slope_rad), std::cos(slope_rad));
+  plane.static_friction = mu_static;
+  plane.kinetic_friction = mu_kinetic;
+  return plane;
+}
+
+SolverParams params_with(Integrator integrator, const Obstacle& obstacle) {
+  SolverParams params;
+  params.integrator = integrator;
+  params.time_step = 1e-3;
+  params.environment.gravity = {0.0, 0.0, -g};
+  params.obstacles = {obstacle};
+  return params;
+}
+
+class EveryIntegrator : public ::testing::TestWithParam<Integrator> {};
+
+TEST_P(EveryIntegrator, AParticleRestingOnAFloorStaysOnItFor10000Steps) {
+  Obstacle floor;
+  floor.thickness_m = 0.004;
+  State state;
+  const SpringModel model = lone_particle({0.1, 0.2, 0.05}, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(GetParam(), floor);
+  StepWorkspace workspace;
+  for (int n = 0; n < 10000; ++n) {
+    ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
+    ASSERT_GE(state.x.z(), floor.thickness_m * (1.0 - 1e-12)) << "step " << n;
+  }
+  EXPECT_NEAR(state.x.z(), floor.thickness_m, 1e-9);
+  EXPECT_NEAR(state.v.norm(), 0.0, 1e-9);
+  EXPECT_EQ(workspace.obstacle_contacts, 1);
+}
+
+TEST_P(EveryIntegrator, AParticleDroppedOnASphereEndsOutsideIt) {
+  Obstacle ball;
+  ball.shape = ObstacleShape::sphere;
+  ball.radius_m = 0.3;
+  ball.static_friction = ball.kinetic_friction = 0.3;
+  State state;
+  const SpringModel model = lone_particle({0.05, 0.0, 1.0}, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(GetParam(), ball);
+  StepWorkspace workspace;
+  for (int n = 0; n < 3000; ++n) {
+    ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
+    ASSERT_GE(state.x.head<3>().norm(), ball.radius_m + ball.thickness_m - 1e-9) << "step " << n;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, EveryIntegrator,
+                         ::testing::Values(Integrator::symplectic_euler,
+                                           Integrator::position_verlet, Integrator::implicit_euler,
+                                           Integrator::projective_dynamics),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(ObstacleFriction, StaticFrictionHoldsAParticleOnASlope) {
+  // tan 20 deg = 0.36 < mu_s = 0.5: it never starts sliding
+  const Obstacle plane = slope(20.0 * M_PI / 180.0, 0.5, 0.4);
+  State state;
+  const Eigen::Vector3d start = plane.thickness_m * plane.normal;
+  const SpringModel model = lone_particle(start, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(Integrator::symplectic_euler, plane);
+  for (int n = 0; n < 2000; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_LT((state.x - start).norm(), 1e-12);
+  EXPECT_LT(state.v.norm(), 1e-12);
+}
+
+TEST(ObstacleFriction, KineticFrictionSlowsASlidingParticleAsCoulombSays) {
+  // down a 30-degree slope with mu_k = 0.3: a = g (sin 30 - 0.3 cos 30) = 2.36 m/s^2 along it
+  const double angle_rad = 30.0 * M_PI / 180.0;
+  const Obstacle plane = slope(angle_rad, 0.3, 0.3);
+  const Eigen::Vector3d down_slope(0.0, -std::cos(angle_rad), -std::sin(angle_rad));
+  State state;
+  const Eigen::Vector3d start = plane.thickness_m * plane.normal;
+  const SpringModel model = lone_particle(start, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(Integrator::symplectic_euler, plane);
+  const double duration_s = 1.0;
+  for (int n = 0; n < 1000; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  const double a = g * (std::sin(angle_rad) - 0.3 * std::cos(angle_rad));
+  EXPECT_NEAR(state.v.dot(down_slope), a * duration_s, 0.02 * a * duration_s);
+  EXPECT_NEAR((state.x - start).dot(down_slope), 0.5 * a * duration_s * duration_s,
+              0.02 * 0.5 * a * duration_s * duration_s);
+  EXPECT_NEAR((state.x - start).dot(plane.normal), 0.0, 1e-12);  // on the slope throughout
+
+  // a particle thrown up-flat on a level floor stops after v^2 / (2 mu_k g)
+  const Obstacle floor = slope(0.0, 0.3, 0.3);
+  const SpringModel thrown = lone_particle(start, Eigen::Vector3d(2.0, 0.0, 0.0), state);
+  const SolverParams on_floor = params_with(Integrator::symplectic_euler, floor);
+  for (int n = 0; n < 2000; ++n) ASSERT_EQ(step(thrown, on_floor, state), StepStatus::ok);
+  const double stopping_m = 2.0 * 2.0 / (2.0 * 0.3 * g);
+  EXPECT_NEAR(state.x.x() - start.x(), stopping_m, 0.02 * stopping_m);
+  EXPECT_EQ(state.v.x(), 0.0);
+}
+
+TEST(ObstacleContacts, AFastParticleDoesNotTunnelThroughAThinWall) {
+  // a 2 mm wall, and a particle covering 5 cm per step towards it: from x = -0.02 m to 0.03 m
+  // in one step, clear of the wall at both ends
+  Obstacle wall;
+  wall.shape = ObstacleShape::box;
+  wall.half_extents_m = {0.001, 1.0, 1.0};
+  wall.thickness_m = 0.002;
+  State state;
+  const SpringModel model = lone_particle({-0.52, 0.0, 0.0}, Eigen::Vector3d(50.0, 0.0, 0.0), state);
+  SolverParams params = params_with(Integrator::symplectic_euler, wall);
+  params.environment.gravity.setZero();
+  for (int n = 0; n < 40; ++n) {
+    ASSERT_EQ(step(model, params, state), StepStatus::ok);
+    ASSERT_LE(state.x.x(), -0.003 + 1e-12) << "step " << n;
+  }
+  EXPECT_NEAR(state.x.x(), -0.003, 1e-12);  // stopped against it
+}
+
+TEST(ObstacleContacts, AMovingObstacleCarriesTheParticleAndPinsStay) {
+  // a floor rising at 1 m/s lifts a particle resting on it; a pinned particle is not touched
+  Obstacle lift;
+  lift.motion.velocity = {0.0, 0.0, 1.0};
+  State state;
+  SpringModel model = lone_particle({0.0, 0.0, lift.thickness_m}, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(Integrator::implicit_euler, lift);
+  for (int n = 0; n < 500; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_NEAR(state.x.z(), 0.5 + lift.thickness_m, 1e-9);
+  EXPECT_NEAR(state.v.z(), 1.0, 1e-9);
+
+  model.pinned[0] = 1;
+  finalize_model(model);
+  state.x = Eigen::Vector3d(0.0, 0.0, -1.0);
+  state.v.setZero();
+  for (int n = 0; n < 10; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_EQ(state.x.z(), -1.0);
+}
+
+}  // namespace
+}  // namespace tissu
