@@ -9,6 +9,10 @@
 namespace tissu {
 namespace {
 
+/// The box the automatic camera frames: the cloth over the whole run. Obstacles are left out on
+/// purpose: the cloth is the subject, and what it drapes over (the drape scene's ball) lies inside
+/// the box it sweeps anyway, while a big obstacle (a table-sized box, a long capsule) would shrink
+/// the cloth to a few pixels. Planes have no mesh and would be unbounded.
 Eigen::AlignedBox3d bounds_of(const std::vector<RenderFrame>& frames) {
   Eigen::AlignedBox3d box;
   for (const RenderFrame& frame : frames) {
@@ -35,6 +39,8 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
     scene.mesh = &frames[k].mesh;
     scene.pinned = frames[k].pinned;
     scene.face_strain = frames[k].face_strain;
+    scene.obstacles = frames[k].obstacles;
+    scene.ground_height_m = frames[k].ground_height_m;
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.png", k);
     write_png(output_dir / name, renderer.render(scene, camera));

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct RenderFrame {
   IndexedMesh mesh;                  ///< the cloth's surface
   std::vector<std::uint8_t> pinned;  ///< #V, 1 for pinned particles; may be empty
   std::vector<float> face_strain;    ///< #F mean edge strain; may be empty (dimensionless)
+  // the two below are brace-initialised so that frames listed without them stay -Wextra clean
+  std::vector<IndexedMesh> obstacles{};     ///< closed meshes, where they are at the frame's time
+  std::optional<double> ground_height_m{};  ///< height (z, m) of a floor plane, if any
 };
 
 struct RenderedRun {
@@ -26,8 +30,9 @@ struct RenderedRun {
 };
 
 /// Writes frames[k] to output_dir/frame_k.png (5 digits) with settings.camera, or a camera that
-/// frames the bounding box of every frame, then, if settings.video, output_dir/<video_stem>.mp4
-/// and .gif at `images_per_second`. Calls on_image(done, total) after each image.
+/// frames the bounding box of every frame's cloth (not its obstacles), then, if settings.video,
+/// output_dir/<video_stem>.mp4 and .gif at `images_per_second`. Calls on_image(done, total) after
+/// each image.
 RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
                           double images_per_second, const std::filesystem::path& output_dir,
                           const std::string& video_stem,

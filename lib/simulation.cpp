@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "lib/cloth_setup.hpp"
+#include "lib/obstacle_mesh.hpp"
 #include "lib/render_frames.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
@@ -45,12 +46,20 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   return s;
 }
 
-RenderFrame snapshot(const ClothComplex& lcc) {
+/// What image of the frame at `time_s` shows: the cloth, and the obstacles where they are then,
+/// a +z plane becoming the renderer's ground.
+RenderFrame snapshot(const ClothComplex& lcc, const std::vector<Obstacle>& obstacles,
+                     double time_s) {
   RenderFrame frame{current_mesh(lcc), {}, face_edge_strain(lcc)};
   frame.pinned.resize(frame.mesh.vertices.size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     frame.pinned[v->info().particle_index] = v->info().pinned ? 1 : 0;
   }
+  for (const Obstacle& obstacle : obstacles) {
+    if (obstacle.shape != ObstacleShape::plane)
+      frame.obstacles.push_back(obstacle_mesh(obstacle, time_s));
+  }
+  frame.ground_height_m = ground_height_m(obstacles, time_s);
   return frame;
 }
 
@@ -105,7 +114,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
                  current_mesh(lcc), output.mesh_format);
     }
-    if (render.enabled && frame % render.every == 0) to_render.push_back(snapshot(lcc));
+    if (render.enabled && frame % render.every == 0)
+      to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };

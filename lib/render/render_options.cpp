@@ -56,6 +56,7 @@ void validate_render_options(const RenderOptions& options) {
   check_color("wireframe colour", options.wireframe_color);
   check_color("pin colour", options.pin_color);
   check_color("ground colour", options.ground_color);
+  check_color("obstacle colour", options.obstacle_color);
   check_range("wireframe width (pixels)", options.wireframe_width_px, 1.0, 16.0);
   check_range("wireframe opacity", options.wireframe_opacity, 0.0, 1.0);
   check_range("pin size (pixels)", options.pin_size_px, 1.0, 64.0);

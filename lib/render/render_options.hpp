@@ -30,6 +30,7 @@ struct RenderOptions {
   Eigen::Vector3f wireframe_color{0.10f, 0.08f, 0.08f};   ///< edge lines: near black
   Eigen::Vector3f pin_color{0.08f, 0.08f, 0.10f};         ///< pin squares: near black
   Eigen::Vector3f ground_color{0.80f, 0.80f, 0.78f};      ///< ground plane: light grey
+  Eigen::Vector3f obstacle_color{0.66f, 0.70f, 0.76f};    ///< obstacles: light grey-blue
   float wireframe_width_px = 1.0f;                        ///< edge line width (pixels), in [1, 16]
   float wireframe_opacity = 0.6f;  ///< edge lines blended over the surface: 0 invisible, 1 opaque
   float pin_size_px = 6.0f;        ///< pin square side (pixels), in [1, 64]

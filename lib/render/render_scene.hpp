@@ -5,14 +5,14 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "topology/indexed_mesh.hpp"
 
 namespace tissu {
 
-/// One frame's content. Simple obstacles (spheres, boxes) are not drawn yet; they will join this
-/// struct as a list of shapes when the scenario has them.
+/// One frame's content.
 struct RenderScene {
   const IndexedMesh* mesh = nullptr;  ///< the cloth, not owned: #V positions (m), faces of 3 or 4
   std::vector<std::uint8_t> pinned;   ///< #V, non-zero for a pinned particle; empty: none pinned
@@ -20,6 +20,9 @@ struct RenderScene {
   /// so 0 is at rest and 0.1 is 10 % stretched; empty: all zero.
   std::vector<float> face_strain;
   std::optional<double> ground_height_m;  ///< height (z, m) of a horizontal ground plane, if any
+  /// Rigid obstacles, not owned: closed triangle (or polygon) meshes, counter-clockwise seen from
+  /// outside, positions (m) where they are at this frame's time. Empty: none.
+  std::span<const IndexedMesh> obstacles;
 };
 
 }  // namespace tissu

@@ -14,6 +14,7 @@
 #include "lib/render/gl_context.hpp"
 #include "lib/render/gl_functions.hpp"
 #include "lib/render/gl_program.hpp"
+#include "lib/render/obstacle_geometry.hpp"
 #include "lib/render/shader_sources.hpp"
 
 namespace tissu {
@@ -118,7 +119,7 @@ struct Renderer::State {
   GlFunctions gl;
   GLuint surface_program = 0;
   GLuint flat_program = 0;
-  VertexArray cloth, ground, edges, pins;
+  VertexArray cloth, ground, obstacles, edges, pins;
   GLuint multisample_framebuffer = 0;  ///< 0: draw straight into the context's framebuffer
   std::array<GLuint, 2> multisample_renderbuffers{};  ///< colour, depth
   float max_line_width = 1.0f;
@@ -133,6 +134,7 @@ struct Renderer::State {
     flat_program = build_program(gl, "flat", shaders::flat_vertex, shaders::flat_fragment);
     cloth = make_vertex_array(gl, Layout::surface);
     ground = make_vertex_array(gl, Layout::surface);
+    obstacles = make_vertex_array(gl, Layout::surface);
     edges = make_vertex_array(gl, Layout::flat);
     pins = make_vertex_array(gl, Layout::flat);
     float range[2] = {1.0f, 1.0f};
@@ -147,7 +149,7 @@ struct Renderer::State {
 
   ~State() {
     context->make_current();
-    for (VertexArray* va : {&cloth, &ground, &edges, &pins}) {
+    for (VertexArray* va : {&cloth, &ground, &obstacles, &edges, &pins}) {
       gl.DeleteBuffers(1, &va->buffer);
       gl.DeleteVertexArrays(1, &va->array);
     }
@@ -202,6 +204,7 @@ struct Renderer::State {
   Image render(const RenderScene& scene, const Camera& camera) {
     validate_camera(camera);
     const ClothGeometry geometry = cloth_geometry(scene);
+    const ObstacleGeometry solids = obstacle_geometry(scene.obstacles);
     const RenderOptions& o = options;
 
     context->make_current();
@@ -216,6 +219,7 @@ struct Renderer::State {
     // the ground: a square some cloth sizes wide under the cloth, fading out towards its edge
     std::optional<Ground> ground_plane;
     Eigen::AlignedBox3d visible = geometry.bounds;
+    visible.extend(solids.bounds);  // or the clip planes could cut the obstacles
     if (o.show_ground && scene.ground_height_m) {
       const bool empty = geometry.bounds.isEmpty();
       Ground g;
@@ -231,7 +235,7 @@ struct Renderer::State {
       const double aspect = static_cast<double>(o.width) / o.height;
       const Eigen::Matrix4f view_projection =
           projection_matrix(camera, aspect, clip->first, clip->second) * view_matrix(camera);
-      draw_surfaces(geometry, ground_plane, camera, view_projection);
+      draw_surfaces(geometry, solids, ground_plane, camera, view_projection);
       draw_overlays(geometry, view_projection);
     }
 
@@ -246,10 +250,11 @@ struct Renderer::State {
     return context->read_pixels();
   }
 
-  /// The ground plane, then the cloth, both lit, pushed back in depth so that lines and points
-  /// drawn at the same depth show in front of them.
-  void draw_surfaces(const ClothGeometry& geometry, const std::optional<Ground>& ground_plane,
-                     const Camera& camera, const Eigen::Matrix4f& view_projection) {
+  /// The ground plane, the obstacles, then the cloth, all lit, pushed back in depth so that lines
+  /// and points drawn at the same depth show in front of them.
+  void draw_surfaces(const ClothGeometry& geometry, const ObstacleGeometry& solids,
+                     const std::optional<Ground>& ground_plane, const Camera& camera,
+                     const Eigen::Matrix4f& view_projection) {
     const RenderOptions& o = options;
     const Eigen::Vector3d forward = (camera.target - camera.position).normalized();
     const Eigen::Vector3d right = forward.cross(camera.up).normalized();
@@ -279,6 +284,15 @@ struct Renderer::State {
       gl.PolygonOffset(4.0f, 16.0f);  // behind cloth lying on it
       draw(gl, ground, GL_TRIANGLES);
     }
+
+    // obstacles: lit like the cloth's front, one colour on both sides (only the outside shows on
+    // a closed mesh), and no wireframe
+    upload(gl, obstacles, solids.triangles, cloth_vertex_floats);
+    gl.Uniform1i(uniform(surface_program, "u_mode"), 0);
+    set_color(surface_program, "u_front_color", o.obstacle_color);
+    set_color(surface_program, "u_back_color", o.obstacle_color);
+    gl.PolygonOffset(2.0f, 8.0f);  // behind cloth resting on them, in front of the ground
+    draw(gl, obstacles, GL_TRIANGLES);
 
     upload(gl, cloth, geometry.triangles, cloth_vertex_floats);
     gl.Uniform1i(uniform(surface_program, "u_mode"), o.color_mode == ColorMode::strain ? 1 : 0);

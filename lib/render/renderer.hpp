@@ -14,9 +14,10 @@ namespace tissu {
 /// Owns an offscreen OpenGL context of the options' image size and the GPU objects drawn with it.
 /// Draws the cloth with smooth (area-weighted) vertex normals and two-sided lighting from two
 /// lights fixed to the camera (upper left key, right fill), the back side in its own colour; or
-/// coloured by face strain. Optionally overlays the polygon edges (a quad shows as a quad), marks
-/// pinned particles, and draws a ground plane that fades into the background. Not thread-safe;
-/// one renderer per thread.
+/// coloured by face strain. Draws the scene's obstacles with the same lights in the obstacle
+/// colour (smooth on curved surfaces, flat on each side of sharp edges, no wireframe). Optionally
+/// overlays the polygon edges (a quad shows as a quad), marks pinned particles, and draws a
+/// ground plane that fades into the background. Not thread-safe; one renderer per thread.
 class Renderer {
  public:
   /// Validates `options` (std::invalid_argument) and creates the context (std::runtime_error).

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// GLSL 330 core sources of the renderer's two programs: `surface` (cloth and ground, lit) and
+/// GLSL 330 core sources of the renderer's two programs: `surface` (cloth, obstacles and
+/// ground, lit) and
 /// `flat` (wireframe lines and pin points, one colour).
 
 namespace tissu::shaders {

@@ -48,6 +48,10 @@ TEST(ValidateRenderOptions, RejectsColoursOutsideZeroToOne) {
   options.back_color = {0.5f, 1.5f, 0.0f};
   EXPECT_THAT(options_error(options),
               HasSubstr("render: back colour components must be in [0, 1], got 1.5"));
+  options = RenderOptions{};
+  options.obstacle_color = {-0.1f, 0.5f, 0.5f};
+  EXPECT_THAT(options_error(options),
+              HasSubstr("render: obstacle colour components must be in [0, 1], got -0.1"));
 }
 
 TEST(ValidateRenderOptions, RejectsANonPositiveStrainRangeAndBadSampleCounts) {

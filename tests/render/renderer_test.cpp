@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "render_test_support.hpp"
 
@@ -204,6 +205,52 @@ TEST(Renderer, DrawsTheGroundUnderTheCloth) {
   const Image without = renderer.render(scene, camera);
   EXPECT_LT(color_distance(color_at(without, width / 2, height - 3), options.background_color),
             0.02f);
+}
+
+TEST(Renderer, DrawsObstaclesFlatInTheirColourWithoutWireframeAndBehindTheCloth) {
+  RenderOptions options = small_options();
+  options.obstacle_color = {0.20f, 0.75f, 0.30f};  // green: unlike every other colour drawn
+  options.wireframe = true;
+  options.wireframe_opacity = 1.0f;
+  Renderer wired(options);
+  options.wireframe = false;
+  Renderer plain(options);
+  const Camera camera = square_camera();  // looking down -z
+  // the cloth at z = 0 over x in [-0.4, 0.2]; the cube's top at z = -0.05 under x in [0, 0.5]:
+  // the cube lies beyond the cloth's depth range, so it shows only if it is clipped as itself
+  const IndexedMesh cloth = test::square_mesh(0.6, 3, true, {-0.1, 0.0, 0.0});
+  const std::vector<IndexedMesh> obstacles{test::cube_mesh({0.25, 0.0, -0.3}, 0.25)};
+  RenderScene scene = test::scene_of(cloth);
+  scene.obstacles = obstacles;
+  const Image image = wired.render(scene, camera);
+  const Image unwired = plain.render(scene, camera);
+
+  const auto at = [&](const Image& im, const Eigen::Vector3d& p) {
+    const Eigen::Vector2d px = pixel_of(camera, p);
+    return color_at(im, int(px.x()), int(px.y()));
+  };
+  // the cube's top face, beside the cloth: lit green, one flat shade (its two triangles and
+  // their shared diagonal alike), and no edge lines on it
+  const Eigen::Vector3f top = at(image, {0.35, 0.0, -0.05});
+  EXPECT_GT(top.y(), 1.5f * top.x()) << top.transpose();
+  EXPECT_GT(top.y(), 1.5f * top.z()) << top.transpose();
+  EXPECT_LT(color_distance(top, options.obstacle_color), 0.3f) << top.transpose();
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.3, -0.2, -0.05),
+                                   {0.45, 0.2, -0.05},
+                                   {0.25, 0.0, -0.05},
+                                   {0.4, 0.15, -0.05}})
+    EXPECT_LT(color_distance(at(image, p), top), 0.01f) << p.transpose();
+  float largest_change = 0.0f;
+  for (double y = -0.2; y <= 0.2; y += 0.02)
+    for (double x = 0.22; x <= 0.48; x += 0.02)
+      largest_change = std::max(
+          largest_change, color_distance(at(image, {x, y, -0.05}), at(unwired, {x, y, -0.05})));
+  EXPECT_LT(largest_change, 0.01f);
+  // where the cloth covers the cube, the cloth shows
+  const Eigen::Vector3f covered = at(image, {0.12, 0.07, 0.0});
+  EXPECT_LT(color_distance(covered, options.front_color),
+            color_distance(covered, options.obstacle_color))
+      << covered.transpose();
 }
 
 TEST(Renderer, GivesTheSameImageTwiceAndAnEmptyMeshShowsOnlyTheBackground) {
