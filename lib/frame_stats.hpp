@@ -23,6 +23,9 @@ struct FrameStats {
   int splits = 0;                 ///< edges bisected by adaptive refinement after this frame
   int merges = 0;                 ///< bisections undone by adaptive coarsening after this frame
   int contacts = 0;               ///< particle-obstacle contacts resolved in the frame's last step
+  int self_contacts =
+      0;  ///< pairs pushed apart or stopped by self-collision, over the frame's steps
+  double collision_ms = 0.0;  ///< wall time of self-collision over the frame's steps (ms)
 };
 
 /// Writes stats.csv: a header line, then one line per frame, flushed as it goes.

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "solver/collision/primitive_distance.hpp"
+
 namespace tissu {
 namespace {
 
@@ -18,35 +20,6 @@ std::vector<Triangle> triangles_of(const IndexedMesh& mesh) {
     for (std::size_t k = 2; k < f.size(); ++k) out.push_back({f[0], f[k - 1], f[k]});
   }
   return out;
-}
-
-/// Barycentric coordinates of the point of triangle (a, b, c) nearest to p (Ericson, Real-Time
-/// Collision Detection, 5.1.5: the projection onto the plane, clamped to the triangle by taking the
-/// nearest point on an edge when it falls outside).
-Eigen::Vector3d nearest_barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                    const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d00 = ab.dot(ab), d01 = ab.dot(ac), d11 = ac.dot(ac);
-  const double d20 = ap.dot(ab), d21 = ap.dot(ac);
-  const double det = d00 * d11 - d01 * d01;
-  const double v = (d11 * d20 - d01 * d21) / det;
-  const double w = (d00 * d21 - d01 * d20) / det;
-  if (v >= 0.0 && w >= 0.0 && v + w <= 1.0) return {1.0 - v - w, v, w};
-  // outside: the nearest point lies on one of the three edges
-  auto on_segment = [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
-    const Eigen::Vector3d d = to - from;
-    return std::clamp((p - from).dot(d) / d.dot(d), 0.0, 1.0);
-  };
-  const double t_ab = on_segment(a, b), t_bc = on_segment(b, c), t_ca = on_segment(c, a);
-  const Eigen::Vector3d candidates[3] = {
-      {1.0 - t_ab, t_ab, 0.0}, {0.0, 1.0 - t_bc, t_bc}, {t_ca, 0.0, 1.0 - t_ca}};
-  const Eigen::Vector3d* best = &candidates[0];
-  double best_m2 = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& l : candidates) {
-    const double m2 = (l[0] * a + l[1] * b + l[2] * c - p).squaredNorm();
-    if (m2 < best_m2) best_m2 = m2, best = &l;
-  }
-  return *best;
 }
 
 }  // namespace
@@ -75,7 +48,7 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
       if (boxes[k].exteriorDistance(X) >= best_m) continue;
       const Triangle& t = triangles[k];
       const Eigen::Vector3d l =
-          nearest_barycentric(X, other.rest_m[t.a], other.rest_m[t.b], other.rest_m[t.c]);
+          nearest_on_triangle(X, other.rest_m[t.a], other.rest_m[t.b], other.rest_m[t.c]);
       const double rest_gap_m =
           (l[0] * other.rest_m[t.a] + l[1] * other.rest_m[t.b] + l[2] * other.rest_m[t.c] - X)
               .norm();

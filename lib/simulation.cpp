@@ -26,9 +26,25 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, const std::st
   return dir / (stem + number + "." + extension(format));
 }
 
+/// What the solver steps of one frame did.
+struct FrameSteps {
+  double wall_ms = 0.0;
+  int unconverged = 0;
+  int obstacle_contacts = 0;  ///< in the last step
+  int self_contacts = 0;
+  double collision_ms = 0.0;
+
+  void add(StepStatus status, const StepWorkspace& workspace) {
+    if (status == StepStatus::not_converged) ++unconverged;
+    obstacle_contacts = workspace.obstacle_contacts;
+    self_contacts += workspace.self_collision.proximities + workspace.self_collision.impacts;
+    collision_ms += workspace.self_collision.wall_ms;
+  }
+};
+
 FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
-                   const Environment& environment, int frame, int frame_count, double step_ms,
-                   int unconverged_steps) {
+                   const Environment& environment, int frame, int frame_count,
+                   const FrameSteps& steps) {
   const SpringModel& m = cloth.model;
   FrameStats s;
   s.frame = frame;
@@ -41,8 +57,11 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.total_mass = total_mass(m);
   s.kinetic_energy = kinetic_energy(m, cloth.state);
   s.potential_energy = potential_energy(m, environment.gravity, cloth.state);
-  s.step_ms = step_ms;
-  s.unconverged_steps = unconverged_steps;
+  s.step_ms = steps.wall_ms;
+  s.unconverged_steps = steps.unconverged;
+  s.contacts = steps.obstacle_contacts;
+  s.self_contacts = steps.self_contacts;
+  s.collision_ms = steps.collision_ms;
   return s;
 }
 
@@ -103,12 +122,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     result.video_warning = rendered.video_warning;
   };
 
-  auto record = [&](int frame, double step_ms, int unconverged, Adaptation changes, int contacts) {
-    FrameStats row =
-        measure(cloth, lcc, scenario.solver.environment, frame, frame_count, step_ms, unconverged);
+  auto record = [&](int frame, const FrameSteps& steps, Adaptation changes) {
+    FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits;
     row.merges = changes.merges;
-    row.contacts = contacts;
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
@@ -119,17 +136,17 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
-  record(0, 0.0, 0, Adaptation{}, 0);
+  record(0, FrameSteps{}, Adaptation{});
 
   RunResult result;
   StepWorkspace workspace;
   for (int frame = 1; frame <= frame_count; ++frame) {
     State next = cloth.state;
-    int unconverged = 0;
+    FrameSteps steps;
     const auto start = std::chrono::steady_clock::now();
     for (int sub = 0; sub < scenario.substeps; ++sub) {
       const StepStatus status = step(cloth.model, scenario.solver, next, workspace);
-      if (status == StepStatus::not_converged) ++unconverged;
+      steps.add(status, workspace);
       if (status == StepStatus::non_finite) {
         // the complex still holds the last good frame
         const auto last_good =
@@ -148,10 +165,9 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         return result;
       }
     }
-    const double step_ms =
+    steps.wall_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     cloth.state = std::move(next);
-    const int contacts = workspace.obstacle_contacts;
     write_back(cloth, cloth.state, lcc);
     Adaptation changes;
     if (scenario.adaptive.enabled && frame % scenario.adaptive.every == 0) {
@@ -161,7 +177,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         workspace = StepWorkspace{};
       }
     }
-    record(frame, step_ms, unconverged, changes, contacts);
+    record(frame, steps, changes);
     result.frames_done = frame;
   }
   render_recorded(result);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
+#include "solver/collision/self_collision.hpp"
 
 namespace tissu {
 
@@ -89,7 +90,8 @@ struct SolverParams {
   Environment environment;
   ImplicitOptions implicit;
   ProjectiveDynamicsOptions pd;
-  std::vector<Obstacle> obstacles;  ///< kept out of after every step, whatever the integrator
+  std::vector<Obstacle> obstacles;      ///< kept out of after every step, whatever the integrator
+  SelfCollisionOptions self_collision;  ///< the cloth against itself, after every step
 };
 
 }  // namespace tissu

@@ -1,5 +1,6 @@
 #include "solver/spring_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,11 +60,28 @@ void check_values(const SpringModel& model) {
   }
 }
 
+/// The edges of the triangles, each once as (i < j), sorted.
+Eigen::MatrixX2i edges_of(const Eigen::MatrixX3i& triangles) {
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = triangles(t, c), b = triangles(t, (c + 1) % 3);
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Eigen::MatrixX2i out(edges.size(), 2);
+  for (std::size_t e = 0; e < edges.size(); ++e) out.row(e) << edges[e].first, edges[e].second;
+  return out;
+}
+
 }  // namespace
 
 void finalize_model(SpringModel& model) {
   check_sizes(model);
   check_values(model);
+  model.surface_edges = edges_of(model.triangles);
   const int particles = model.particle_count();
   const int springs = model.spring_count();
 

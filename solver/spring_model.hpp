@@ -34,6 +34,8 @@ struct SpringModel {
   Eigen::MatrixX3i triangles;         ///< #T x 3 particle ids of the surface, quads split in two,
                                       ///< counter-clockwise seen from the front; for aerodynamics
   ParticleSpringIncidence incidence;  ///< filled by finalize_model()
+  Eigen::MatrixX2i surface_edges;     ///< #E x 2 edges of the triangles, (i < j), each once,
+                                      ///< sorted; filled by finalize_model(), for collisions
 
   int particle_count() const { return static_cast<int>(mass.size()); }
   int spring_count() const { return static_cast<int>(springs.rows()); }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "solver/collision/obstacle_contacts.hpp"
+#include "solver/collision/self_collision.hpp"
 #include "solver/integrators/implicit_euler.hpp"
 #include "solver/integrators/position_verlet.hpp"
 #include "solver/integrators/projective_dynamics.hpp"
@@ -77,7 +78,7 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
 StepStatus step(const SpringModel& model, const SolverParams& params, State& state,
                 StepWorkspace& workspace) {
   check_state_size(model, state);
-  if (!params.obstacles.empty()) workspace.step_start_x = state.x;
+  if (!params.obstacles.empty() || params.self_collision.enabled) workspace.step_start_x = state.x;
   StepStatus status = StepStatus::ok;
   switch (params.integrator) {
     case Integrator::symplectic_euler:
@@ -93,9 +94,14 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       status = projective_dynamics_step(model, params, state, workspace);
       break;
   }
+  // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
+  const double end_time_s = state.time + params.time_step;
   workspace.obstacle_contacts =
-      resolve_obstacle_contacts(model, params.obstacles, params.time_step,
-                                state.time + params.time_step, workspace.step_start_x, state);
+      resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
+                                workspace.step_start_x, state, workspace.touching_obstacle);
+  workspace.self_collision = resolve_self_collisions(
+      model, params.self_collision, params.time_step, workspace.step_start_x,
+      workspace.touching_obstacle, workspace.self_collision_pairs, state);
   state.time += params.time_step;
   if (status == StepStatus::non_finite || !state.x.allFinite() || !state.v.allFinite()) {
     return StepStatus::non_finite;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "solver/collision/self_collision.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "solver/integrators/implicit_euler_workspace.hpp"
 #include "solver/integrators/projective_dynamics_workspace.hpp"
@@ -18,6 +19,9 @@ struct StepWorkspace {
   ProjectiveDynamicsWorkspace pd;   ///< buffers and caches of projective_dynamics_step()
   Eigen::VectorXd step_start_x;     ///< 3#P positions before the step, when there are obstacles (m)
   int obstacle_contacts = 0;        ///< particle-obstacle contacts resolved by the last step
+  std::vector<std::uint8_t> touching_obstacle;  ///< #P, 1 where an obstacle held the particle
+  SelfCollisionReport self_collision;       ///< what self-collision handling did in the last step
+  SelfCollisionCache self_collision_pairs;  ///< broad-phase pairs kept between steps
 };
 
 }  // namespace tissu

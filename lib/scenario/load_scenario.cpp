@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "lib/scenario/read_cloth.hpp"
-#include "lib/scenario/read_obstacles.hpp"
+#include "lib/scenario/read_collisions.hpp"
 #include "lib/scenario/read_render.hpp"
 #include "solver/step.hpp"
 
@@ -167,6 +167,9 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
   s.solver.obstacles = read_obstacles(top);
+  if (top.has("self_collision")) {
+    s.solver.self_collision = read_self_collision(top.object("self_collision"));
+  }
   if (top.has("adaptive")) {
     s.adaptive = read_adaptive(top.object("adaptive"));
     if (s.adaptive.enabled && s.cloth.grid && s.cloth.grid->cells == GridCells::quads) {

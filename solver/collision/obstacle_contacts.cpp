@@ -65,16 +65,20 @@ bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vec
 
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state) {
-  if (obstacles.empty()) return 0;
+                              State& state, std::vector<std::uint8_t>& touching) {
   const int particles = model.particle_count();
+  touching.assign(particles, 0);
+  if (obstacles.empty()) return 0;
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
     for (const Obstacle& obstacle : obstacles) {
-      contacts += resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
-                          state.x.segment<3>(3 * p), state.v.segment<3>(3 * p));
+      if (resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
+                  state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
+        touching[p] = 1;
+        ++contacts;
+      }
     }
   }
   return contacts;

@@ -2,6 +2,7 @@
 /// \file
 /// Keeps the cloth outside the obstacles after each step, with Coulomb friction. CGAL-free.
 
+#include <cstdint>
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
@@ -24,9 +25,10 @@ namespace tissu {
 /// A particle whose step ends clear of an obstacle but whose path from `start_x` crossed it (a
 /// thin obstacle or a fast particle) is stopped where the path first touches it, then treated the
 /// same way: no tunnelling. Obstacles are resolved one after the other, at their position at
-/// `time_s` (the end of the step). Pinned particles are left alone. Returns the number of contacts.
+/// `time_s` (the end of the step). Pinned particles are left alone. Sets touching[p] to 1 for
+/// each particle in contact (#P, resized) and returns the number of contacts.
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state);
+                              State& state, std::vector<std::uint8_t>& touching);
 
 }  // namespace tissu

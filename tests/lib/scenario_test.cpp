@@ -248,6 +248,21 @@ TEST(Scenario, ReadsObstaclesOfEveryShape) {
   EXPECT_TRUE(o[3].motion.offset_m(1.0).isApprox(Eigen::Vector3d(0, 0, 0.5)));
 }
 
+TEST(Scenario, ReadsSelfCollision) {
+  EXPECT_FALSE(parse_scenario(minimal, "s.json").solver.self_collision.enabled);
+  const Scenario s = parse_scenario(
+      minimal, "s.json",
+      {R"(self_collision={ "thickness": 0.003, "friction": 0.2, "impulse_passes": 2 })"});
+  EXPECT_TRUE(s.solver.self_collision.enabled);
+  EXPECT_DOUBLE_EQ(s.solver.self_collision.thickness_m, 0.003);
+  EXPECT_DOUBLE_EQ(s.solver.self_collision.friction, 0.2);
+  EXPECT_EQ(s.solver.self_collision.impulse_passes, 2);
+  EXPECT_THAT(with("self_collision", R"({ "thickness": 0 })"),
+              HasSubstr("self_collision.thickness: expected a positive number (m), got 0"));
+  EXPECT_THAT(with("self_collision", R"({ "thicknes": 0.01 })"),
+              HasSubstr("did you mean 'thickness'?"));
+}
+
 TEST(Scenario, BadObstaclesAreNamed) {
   EXPECT_THAT(with("obstacles", R"([{ "type": "cone" }])"),
               HasSubstr("dir/s.json: obstacles[0].type: expected one of"));

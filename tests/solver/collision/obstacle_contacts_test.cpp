@@ -129,7 +129,8 @@ TEST(ObstacleContacts, AFastParticleDoesNotTunnelThroughAThinWall) {
   wall.half_extents_m = {0.001, 1.0, 1.0};
   wall.thickness_m = 0.002;
   State state;
-  const SpringModel model = lone_particle({-0.52, 0.0, 0.0}, Eigen::Vector3d(50.0, 0.0, 0.0), state);
+  const SpringModel model =
+      lone_particle({-0.52, 0.0, 0.0}, Eigen::Vector3d(50.0, 0.0, 0.0), state);
   SolverParams params = params_with(Integrator::symplectic_euler, wall);
   params.environment.gravity.setZero();
   for (int n = 0; n < 40; ++n) {

@@ -1,4 +1,4 @@
-#include "lib/scenario/read_obstacles.hpp"
+#include "lib/scenario/read_collisions.hpp"
 
 #include <Eigen/Geometry>
 #include <limits>
@@ -74,6 +74,17 @@ std::vector<Obstacle> read_obstacles(JsonObjectReader& top) {
     obstacles.push_back(read_obstacle(object_reader(*element, top.file(), path)));
   }
   return obstacles;
+}
+
+SelfCollisionOptions read_self_collision(JsonObjectReader self_collision) {
+  SelfCollisionOptions o;
+  o.enabled = self_collision.boolean_or("enabled", true);
+  o.thickness_m = self_collision.number_or("thickness", o.thickness_m, positive(" (m)"));
+  o.friction = self_collision.number_or("friction", o.friction, non_negative(""));
+  o.impulse_passes = self_collision.integer_or("impulse_passes", o.impulse_passes, 0, 1000);
+  o.skin_m = self_collision.number_or("skin", o.skin_m, non_negative(" (m)"));
+  self_collision.finish();
+  return o;
 }
 
 }  // namespace tissu

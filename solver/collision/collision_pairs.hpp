@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// Broad phase of self-collision: the vertex-triangle and edge-edge pairs of the cloth whose swept
+/// boxes overlap during a step, found through a spatial hash. CGAL-free.
+
+#include <vector>
+
+#include "solver/collision/contact_pair.hpp"
+#include "solver/spring_model.hpp"
+
+namespace tissu {
+
+/// Every vertex-triangle pair (the vertex not a corner of the triangle) and edge-edge pair (no
+/// shared end) of `model`'s surface whose boxes, swept from `start_x` to `end_x` (3#P, m) and
+/// grown by `margin_m`, overlap. Primitives are hashed into a uniform grid of cells twice the
+/// mean edge length (Teschner et al. 2003, "Optimized spatial hashing for collision detection of
+/// deformable objects"). Each pair comes once, in the order of its first primitive then of the
+/// cells, whatever the thread count. Pairs of pinned particles only are left out.
+std::vector<CandidatePair> collision_candidates(const SpringModel& model,
+                                                const Eigen::VectorXd& start_x,
+                                                const Eigen::VectorXd& end_x, double margin_m);
+
+}  // namespace tissu

@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// Proximity and continuous collision tests for a vertex-triangle or edge-edge pair whose four
+/// particles move linearly during a step. CGAL-free.
+
+#include <optional>
+
+#include "solver/collision/contact_pair.hpp"
+
+namespace tissu {
+
+/// Positions of the four particles at the start of the step and their displacements over it (m).
+struct PairMotion {
+  std::array<Eigen::Vector3d, 4> start;
+  std::array<Eigen::Vector3d, 4> displacement;
+
+  Eigen::Vector3d at(int k, double t) const { return start[k] + t * displacement[k]; }
+};
+
+/// The pair's closest points at the end of the step, if they are closer than `thickness_m`; the
+/// normal is oriented by the side the pair started on.
+std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
+                                            double thickness_m);
+
+/// The first time in [0, 1] at which the four points are coplanar with the closest points of the
+/// pair within `tolerance_m` of each other (the pair touches), found from the roots of the cubic
+/// (x1 - x0) x (x2 - x0) . (x3 - x0) = 0 in t (Provot 1997; Bridson, Fedkiw & Anderson 2002).
+/// The contact's normal is that of the triangle, or of the two edges, at that time. Pairs that
+/// touch without closing in along it (sliding, or moving apart) are not impacts.
+std::optional<ContactPair> first_impact(const CandidatePair& pair, const PairMotion& motion,
+                                        double tolerance_m);
+
+}  // namespace tissu

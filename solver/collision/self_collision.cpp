@@ -1,0 +1,289 @@
+#include "solver/collision/self_collision.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <optional>
+
+#include "solver/collision/collision_pairs.hpp"
+#include "solver/collision/continuous_collision.hpp"
+#include "solver/parallel.hpp"
+
+namespace tissu {
+namespace {
+
+/// Impact zones stop after this many passes; the step then reports resolved = false.
+constexpr int max_zone_passes = 32;
+
+PairMotion motion_of(const CandidatePair& pair, const Eigen::VectorXd& start_x,
+                     const Eigen::VectorXd& end_x) {
+  PairMotion m;
+  for (int k = 0; k < 4; ++k) {
+    m.start[k] = start_x.segment<3>(3 * pair.particle[k]);
+    m.displacement[k] = end_x.segment<3>(3 * pair.particle[k]) - m.start[k];
+  }
+  return m;
+}
+
+/// test(pair, motion) for every candidate, in parallel, keeping the contacts in candidate order.
+template <class Test>
+std::vector<ContactPair> contacts_among(const std::vector<CandidatePair>& candidates,
+                                        const Eigen::VectorXd& start_x,
+                                        const Eigen::VectorXd& end_x, Test&& test) {
+  const int n = static_cast<int>(candidates.size());
+  std::vector<std::optional<ContactPair>> found(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i)
+    found[i] = test(candidates[i], motion_of(candidates[i], start_x, end_x));
+  std::vector<ContactPair> contacts;
+  for (const std::optional<ContactPair>& c : found) {
+    if (c) contacts.push_back(*c);
+  }
+  return contacts;
+}
+
+/// Per-particle changes summed over pairs, then averaged over the pairs of each particle.
+struct Corrections {
+  explicit Corrections(int particles)
+      : position(Eigen::VectorXd::Zero(3 * particles)),
+        velocity(Eigen::VectorXd::Zero(3 * particles)),
+        pairs(particles, 0) {}
+  Eigen::VectorXd position;  ///< 3#P (m)
+  Eigen::VectorXd velocity;  ///< 3#P (m/s)
+  std::vector<int> pairs;
+
+  void apply(State& state, double h, bool move_with_velocity) {
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      if (pairs[p] == 0) continue;
+      const Eigen::Vector3d dv = velocity.segment<3>(3 * p) / pairs[p];
+      state.x.segment<3>(3 * p) += position.segment<3>(3 * p) / pairs[p];
+      if (move_with_velocity) state.x.segment<3>(3 * p) += h * dv;
+      state.v.segment<3>(3 * p) += dv;
+    }
+  }
+};
+
+/// sum_k w_k^2 / m_k: the inverse of the pair's effective mass along its normal (1/kg).
+double inverse_effective_mass(const Eigen::VectorXd& inverse_mass, const ContactPair& c) {
+  double sum = 0.0;
+  for (int k = 0; k < 4; ++k) sum += c.weight[k] * c.weight[k] * inverse_mass[c.particle[k]];
+  return sum;
+}
+
+/// Adds, to particle k of the pair, w_k / m_k times `impulse` (a mass-weighted share of a change
+/// of the pair's relative position or velocity that conserves momentum, since sum_k w_k = 0).
+void share(const Eigen::VectorXd& inverse_mass, const ContactPair& c,
+           const Eigen::Vector3d& impulse, Eigen::VectorXd& out) {
+  for (int k = 0; k < 4; ++k) {
+    out.segment<3>(3 * c.particle[k]) += c.weight[k] * inverse_mass[c.particle[k]] * impulse;
+  }
+}
+
+Eigen::Vector3d relative(const ContactPair& c, const Eigen::VectorXd& values) {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) r += c.weight[k] * values.segment<3>(3 * c.particle[k]);
+  return r;
+}
+
+void count_pair(const ContactPair& c, Corrections& out) {
+  for (int k = 0; k < 4; ++k) ++out.pairs[c.particle[k]];
+}
+
+/// Step 1: push close pairs out to the thickness, stop their approach, apply friction.
+void repel(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& close,
+           const SelfCollisionOptions& o, double h, State& state) {
+  const int particles = static_cast<int>(inverse_mass.size());
+  Corrections push(particles), friction(particles);
+  for (const ContactPair& c : close) {
+    const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
+    if (!(pair_inverse_mass > 0.0)) continue;
+    const Eigen::Vector3d& n = c.normal;
+    share(inverse_mass, c, (o.thickness_m - c.distance_m) / pair_inverse_mass * n, push.position);
+    const Eigen::Vector3d v_rel = relative(c, state.v);
+    const double v_n = v_rel.dot(n);
+    if (v_n < 0.0) {
+      share(inverse_mass, c, -v_n / pair_inverse_mass * n, push.velocity);
+      const Eigen::Vector3d v_t = v_rel - v_n * n;
+      const double speed_t = v_t.norm();
+      if (speed_t > 0.0) {
+        const double slowed = std::min(o.friction * -v_n / speed_t, 1.0);
+        share(inverse_mass, c, -slowed / pair_inverse_mass * v_t, friction.velocity);
+      }
+    }
+    count_pair(c, push);
+    count_pair(c, friction);
+  }
+  push.apply(state, h, /*move_with_velocity=*/false);
+  friction.apply(state, h, /*move_with_velocity=*/true);
+}
+
+/// Step 2: cancel the approaching relative displacement of each crossing pair along its normal.
+void stop_crossings(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& impacts,
+                    const Eigen::VectorXd& start_x, double h, State& state) {
+  Corrections stop(static_cast<int>(inverse_mass.size()));
+  const Eigen::VectorXd displacement = state.x - start_x;
+  for (const ContactPair& c : impacts) {
+    const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
+    const double approach_m = relative(c, displacement).dot(c.normal);
+    if (!(pair_inverse_mass > 0.0) || approach_m >= 0.0) continue;
+    share(inverse_mass, c, -approach_m / pair_inverse_mass * c.normal, stop.position);
+    count_pair(c, stop);
+  }
+  stop.velocity = stop.position / h;
+  stop.apply(state, h, /*move_with_velocity=*/false);
+}
+
+int find_root(std::vector<int>& parent, int p) {
+  while (parent[p] != p) p = parent[p] = parent[parent[p]];
+  return p;
+}
+
+/// Step 3: merges the particles of every impact into zones and moves each zone as one.
+int move_zones_rigidly(const SpringModel& model, const Eigen::VectorXd& inverse_mass,
+                       const std::vector<ContactPair>& impacts, std::vector<int>& zone_parent,
+                       const Eigen::VectorXd& start_x, double h, State& state) {
+  for (const ContactPair& c : impacts) {
+    for (int k = 1; k < 4; ++k) {
+      const int a = find_root(zone_parent, c.particle[0]),
+                b = find_root(zone_parent, c.particle[k]);
+      if (a != b) zone_parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  const int particles = model.particle_count();
+  // per zone (indexed by its root): mass, mass-weighted displacement, and whether it holds a
+  // particle that cannot move (pinned or held), in which case it stays where it started
+  std::vector<double> mass_kg(particles, 0.0);
+  std::vector<bool> immovable(particles, false);
+  std::vector<int> size(particles, 0);
+  Eigen::VectorXd weighted_displacement = Eigen::VectorXd::Zero(3 * particles);  // kg m
+  for (int p = 0; p < particles; ++p) {
+    const int root = find_root(zone_parent, p);
+    mass_kg[root] += model.mass[p];
+    immovable[root] = immovable[root] || inverse_mass[p] == 0.0;
+    ++size[root];
+    weighted_displacement.segment<3>(3 * root) +=
+        model.mass[p] * (state.x.segment<3>(3 * p) - start_x.segment<3>(3 * p));
+  }
+  int zone_particles = 0;
+  for (int p = 0; p < particles; ++p) {
+    const int root = find_root(zone_parent, p);
+    if (size[root] < 2) continue;  // not in any zone
+    ++zone_particles;
+    const Eigen::Vector3d d =
+        immovable[root]
+            ? Eigen::Vector3d::Zero()
+            : Eigen::Vector3d(weighted_displacement.segment<3>(3 * root) / mass_kg[root]);
+    if (model.pinned[p]) continue;  // held particles go back to where they started
+    state.x.segment<3>(3 * p) = start_x.segment<3>(3 * p) + d;
+    state.v.segment<3>(3 * p) = d / h;
+  }
+  return zone_particles;
+}
+
+/// Largest distance of a particle from `reference` (m).
+double farthest_move_m(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) {
+  return std::sqrt((x - reference).reshaped(3, x.size() / 3).colwise().squaredNorm().maxCoeff());
+}
+
+/// The pairs to test this step: the cached ones while every particle's path stays within half the
+/// skin of where they were found (a pair then cannot have come within the thickness unseen), else
+/// a new cache at the end positions; a step that moves a particle farther than that gets pairs of
+/// its own, swept from start to end, and leaves no cache.
+const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
+                                                      const SelfCollisionOptions& o,
+                                                      const Eigen::VectorXd& start_x,
+                                                      const Eigen::VectorXd& end_x,
+                                                      SelfCollisionCache& cache) {
+  const double half_skin_m = 0.5 * o.skin_m;
+  const bool same_model =
+      cache.built_at_x.size() == end_x.size() && cache.triangles == model.triangles.rows();
+  if (same_model && farthest_move_m(start_x, cache.built_at_x) <= half_skin_m &&
+      farthest_move_m(end_x, cache.built_at_x) <= half_skin_m) {
+    return cache.pairs;
+  }
+  cache.triangles = model.triangles.rows();
+  if (farthest_move_m(end_x, start_x) <= half_skin_m) {
+    cache.built_at_x = end_x;
+    cache.pairs = collision_candidates(model, end_x, end_x, o.thickness_m + o.skin_m);
+  } else {
+    cache.built_at_x.resize(0);
+    cache.pairs = collision_candidates(model, start_x, end_x, o.thickness_m);
+  }
+  return cache.pairs;
+}
+
+SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions& options,
+                            double time_step_s, const Eigen::VectorXd& start_x,
+                            const std::vector<std::uint8_t>& held, SelfCollisionCache& cache,
+                            State& state) {
+  SelfCollisionReport report;
+  const double h = time_step_s;
+  const double touching_m = 1e-3 * options.thickness_m;  // closest points this near have met
+  Eigen::VectorXd inverse_mass = model.inverse_mass;
+  for (std::size_t p = 0; p < held.size(); ++p) {
+    if (held[p]) inverse_mass[p] = 0.0;
+  }
+
+  const std::vector<CandidatePair>& near =
+      candidates_for_step(model, options, start_x, state.x, cache);
+  report.candidates = static_cast<int>(near.size());
+  const std::vector<ContactPair> close =
+      contacts_among(near, start_x, state.x, [&](const CandidatePair& p, const PairMotion& m) {
+        return proximity_at_end(p, m, options.thickness_m);
+      });
+  report.proximities = static_cast<int>(close.size());
+  repel(inverse_mass, close, options, h, state);
+
+  // the impulse passes look for crossings among the pairs found above: their corrections move
+  // particles by less than the thickness the boxes were grown by, or undo part of their step
+  auto crossings_among = [&](const std::vector<CandidatePair>& pairs) {
+    return contacts_among(pairs, start_x, state.x,
+                          [&](const CandidatePair& p, const PairMotion& m) {
+                            return first_impact(p, m, touching_m);
+                          });
+  };
+  for (int pass = 0; pass < options.impulse_passes; ++pass) {
+    const std::vector<ContactPair> impacts = crossings_among(near);
+    if (impacts.empty()) return report;
+    report.impacts += static_cast<int>(impacts.size());
+    stop_crossings(inverse_mass, impacts, start_x, h, state);
+  }
+  // impact zones, the last resort: merged among the step's pairs, then checked against a fresh
+  // search of the whole cloth, since rigid zone motion is not bounded by the pairs' margin
+  auto all_crossings = [&] {
+    return crossings_among(collision_candidates(model, start_x, state.x, touching_m));
+  };
+  std::vector<int> zone_parent(model.particle_count());
+  std::iota(zone_parent.begin(), zone_parent.end(), 0);
+  bool fresh_search = false;
+  for (int pass = 0; pass < max_zone_passes; ++pass) {
+    std::vector<ContactPair> impacts = fresh_search ? all_crossings() : crossings_among(near);
+    if (impacts.empty() && !fresh_search) {
+      fresh_search = true;
+      impacts = all_crossings();
+    }
+    if (impacts.empty()) return report;
+    report.zone_particles =
+        move_zones_rigidly(model, inverse_mass, impacts, zone_parent, start_x, h, state);
+  }
+  report.resolved = all_crossings().empty();
+  return report;
+}
+
+}  // namespace
+
+SelfCollisionReport resolve_self_collisions(const SpringModel& model,
+                                            const SelfCollisionOptions& options, double time_step_s,
+                                            const Eigen::VectorXd& start_x,
+                                            const std::vector<std::uint8_t>& held,
+                                            SelfCollisionCache& cache, State& state) {
+  if (!options.enabled || model.triangles.rows() == 0) return {};
+  const auto start = std::chrono::steady_clock::now();
+  SelfCollisionReport report = resolve(model, options, time_step_s, start_x, held, cache, state);
+  report.wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace tissu

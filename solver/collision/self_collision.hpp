@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// Keeps the cloth from passing through itself: after each step, close pairs are pushed apart and
+/// crossings during the step are stopped. CGAL-free.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "solver/collision/contact_pair.hpp"
+#include "solver/spring_model.hpp"
+
+namespace tissu {
+
+struct SelfCollisionOptions {
+  bool enabled = false;
+  /// distance kept between parts of the cloth that are not neighbours (m): its thickness
+  double thickness_m = 0.004;
+  double friction = 0.1;  ///< Coulomb coefficient between two layers of the cloth, dimensionless
+  /// passes of continuous collision impulses before the remaining pairs are frozen into rigid
+  /// impact zones
+  int impulse_passes = 4;
+  /// extra distance the cached pairs cover (m): they serve until a particle moves half of it
+  double skin_m = 0.01;
+};
+
+/// Broad-phase pairs kept from step to step while no particle has moved far from where they were
+/// found: a neighbour list with a skin (Verlet 1967), so that a cloth at rest or moving slowly is
+/// hashed every few steps instead of every step.
+struct SelfCollisionCache {
+  std::vector<CandidatePair> pairs;  ///< every pair within thickness + skin at `built_at_x`
+  Eigen::VectorXd built_at_x;        ///< 3#P positions when they were found (m); empty: none
+  Eigen::Index triangles = -1;       ///< the model's triangle count then, to notice a new model
+};
+
+/// What one step's self-collision handling found.
+struct SelfCollisionReport {
+  int candidates = 0;      ///< pairs from the broad phase at the end of the step
+  int proximities = 0;     ///< pairs closer than the thickness, pushed apart
+  int impacts = 0;         ///< crossings during the step stopped by impulses, over all passes
+  int zone_particles = 0;  ///< particles moved rigidly in impact zones
+  bool resolved = true;    ///< false when crossings were left after every zone pass
+  double wall_ms = 0.0;    ///< wall time spent (ms)
+};
+
+/// Self-collision response after the integrator has moved the particles from `start_x` to
+/// `state.x` (3#P, m) in a step of `time_step_s` (Bridson, Fedkiw & Anderson 2002, "Robust
+/// treatment of collisions, contact and friction for cloth animation", sections 6-7, simplified):
+/// 1. proximity: vertex-triangle and edge-edge pairs closer than the thickness at the end are
+///    pushed apart along their normal (positions only: no energy is added), their approaching
+///    relative velocity is removed with an inelastic impulse, and friction acts on their relative
+///    tangential velocity;
+/// 2. continuous collision: pairs that cross during the step (first_impact) get impulses that
+///    cancel their approaching relative displacement, for up to `impulse_passes` passes;
+/// 3. impact zones (Provot 1997): particles of pairs still crossing are merged into zones that
+///    move as one, at their mass-weighted mean displacement (translation only), until none cross.
+/// Impulses are mass-weighted and each particle's share is averaged over its pairs, so the
+/// result does not depend on the order of the pairs or on the thread count. Pinned particles, and
+/// those flagged in `held` (#P, or empty; the step passes the particles an obstacle holds), act
+/// as infinitely heavy: they are not moved, and a zone holding one stays where it started.
+/// Velocities change with positions (v += dx / h) except for the proximity push.
+SelfCollisionReport resolve_self_collisions(const SpringModel& model,
+                                            const SelfCollisionOptions& options, double time_step_s,
+                                            const Eigen::VectorXd& start_x,
+                                            const std::vector<std::uint8_t>& held,
+                                            SelfCollisionCache& cache, State& state);
+
+}  // namespace tissu

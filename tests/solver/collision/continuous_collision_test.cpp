@@ -1,0 +1,62 @@
+// Vertex-triangle and edge-edge crossings during a step, and closeness at its end.
+
+#include "solver/collision/continuous_collision.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tissu {
+namespace {
+
+/// A vertex moving by `d` from `p`, against the still triangle (0,0,0), (1,0,0), (0,1,0).
+PairMotion vertex_over_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& d) {
+  PairMotion m;
+  m.start = {p, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+  m.displacement = {d, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  return m;
+}
+
+const CandidatePair vertex_triangle{{0, 1, 2, 3}, false};
+const CandidatePair edge_edge{{0, 1, 2, 3}, true};
+
+TEST(FirstImpact, AVertexFallingThroughATriangleHitsItWhereAndWhenItCrosses) {
+  const PairMotion m = vertex_over_triangle({0.2, 0.3, 0.4}, {0.0, 0.0, -1.0});
+  const std::optional<ContactPair> hit = first_impact(vertex_triangle, m, 1e-9);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_TRUE(hit->weight.isApprox(Eigen::Vector4d(1.0, -0.5, -0.2, -0.3)));
+  EXPECT_TRUE(hit->normal.isApprox(Eigen::Vector3d::UnitZ()));  // towards where it came from
+}
+
+TEST(FirstImpact, AVertexPassingBesideATriangleOrStoppingShortDoesNot) {
+  EXPECT_FALSE(
+      first_impact(vertex_triangle, vertex_over_triangle({0.8, 0.8, 0.4}, {0.0, 0.0, -1.0}), 1e-9));
+  EXPECT_FALSE(
+      first_impact(vertex_triangle, vertex_over_triangle({0.2, 0.3, 0.4}, {0.0, 0.0, -0.3}), 1e-9));
+}
+
+TEST(FirstImpact, TwoEdgesSweepingThroughEachOtherMeet) {
+  // an edge along x at z = 0, another along y falling from z = 0.5 to z = -0.5
+  PairMotion m;
+  m.start = {Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0.25, -1, 0.5),
+             Eigen::Vector3d(0.25, 1, 0.5)};
+  m.displacement = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, -1),
+                    Eigen::Vector3d(0, 0, -1)};
+  const std::optional<ContactPair> hit = first_impact(edge_edge, m, 1e-9);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_TRUE(hit->weight.isApprox(Eigen::Vector4d(0.375, 0.625, -0.5, -0.5)));
+  EXPECT_TRUE(hit->normal.isApprox(-Eigen::Vector3d::UnitZ()));  // the first edge started below
+
+  m.start[2].x() = m.start[3].x() = 1.5;  // now it falls beyond the end of the first edge
+  EXPECT_FALSE(first_impact(edge_edge, m, 1e-9));
+}
+
+TEST(ProximityAtEnd, FindsPairsWithinTheThicknessOnly) {
+  const PairMotion m = vertex_over_triangle({0.2, 0.3, 0.5}, {0.0, 0.0, -0.497});
+  const std::optional<ContactPair> close = proximity_at_end(vertex_triangle, m, 0.004);
+  ASSERT_TRUE(close.has_value());
+  EXPECT_NEAR(close->distance_m, 0.003, 1e-12);
+  EXPECT_TRUE(close->normal.isApprox(Eigen::Vector3d::UnitZ()));
+  EXPECT_FALSE(proximity_at_end(vertex_triangle, m, 0.002));
+}
+
+}  // namespace
+}  // namespace tissu

@@ -1,0 +1,176 @@
+// The cloth against itself: pairs found, crossings stopped, sheets kept apart.
+
+#include "solver/collision/self_collision.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <limits>
+
+#include "solver/collision/collision_pairs.hpp"
+#include "solver/step.hpp"
+#include "tests/solver/test_models.hpp"
+
+namespace tissu {
+namespace {
+
+/// `lower` and `upper` in one model (upper's particles after lower's), and their states joined.
+SpringModel joined(const SpringModel& lower, const State& lower_state, const SpringModel& upper,
+                   const State& upper_state, State& state) {
+  const int offset = lower.particle_count();
+  SpringModel m;
+  m.mass.resize(offset + upper.particle_count());
+  m.mass << lower.mass, upper.mass;
+  m.pinned = lower.pinned;
+  m.pinned.insert(m.pinned.end(), upper.pinned.begin(), upper.pinned.end());
+  m.springs.resize(lower.spring_count() + upper.spring_count(), 2);
+  m.springs << lower.springs, (upper.springs.array() + offset).matrix();
+  m.rest_length.resize(m.springs.rows());
+  m.rest_length << lower.rest_length, upper.rest_length;
+  m.stiffness.resize(m.springs.rows());
+  m.stiffness << lower.stiffness, upper.stiffness;
+  m.damping.resize(m.springs.rows());
+  m.damping << lower.damping, upper.damping;
+  m.kind = lower.kind;
+  m.kind.insert(m.kind.end(), upper.kind.begin(), upper.kind.end());
+  m.triangles.resize(lower.triangles.rows() + upper.triangles.rows(), 3);
+  m.triangles << lower.triangles, (upper.triangles.array() + offset).matrix();
+  finalize_model(m);
+  state.x.resize(lower_state.x.size() + upper_state.x.size());
+  state.x << lower_state.x, upper_state.x;
+  state.v = Eigen::VectorXd::Zero(state.x.size());
+  return m;
+}
+
+constexpr int side = 12;               // particles per side of each sheet
+constexpr double spacing_m = 0.03;     // 0.33 m sheets
+constexpr double thickness_m = 0.004;  // kept between the sheets
+
+/// Two sheets, the upper 5 cm above the lower and shifted by a third of a cell, over a floor.
+struct StackedSheets {
+  StackedSheets() {
+    State lower_state, upper_state;
+    const SpringModel lower =
+        test::grid_model(side, side, spacing_m, 1e-4, 200.0, 0.01, lower_state);
+    const SpringModel upper =
+        test::grid_model(side, side, spacing_m, 1e-4, 200.0, 0.01, upper_state);
+    for (int p = 0; p < side * side; ++p) {
+      lower_state.x.segment<3>(3 * p) += Eigen::Vector3d(0.0, 0.0, 0.2);
+      upper_state.x.segment<3>(3 * p) += Eigen::Vector3d(0.01, 0.01, 0.25);
+    }
+    model = joined(lower, lower_state, upper, upper_state, state);
+    params.integrator = Integrator::implicit_euler;
+    params.time_step = 1.0 / 300.0;
+    params.environment.air_damping = 0.5;
+    Obstacle floor;
+    params.obstacles = {floor};
+    params.self_collision.enabled = true;
+    params.self_collision.thickness_m = thickness_m;
+  }
+  SpringModel model;
+  State state;
+  SolverParams params;
+};
+
+/// For every particle of the upper sheet above a triangle of the lower one (seen from +z), how far
+/// above that triangle it is (m); the smallest such gap.
+double smallest_gap_above_lower_sheet(const SpringModel& model, const State& state) {
+  const int lower_particles = side * side;
+  double smallest_m = std::numeric_limits<double>::infinity();
+  for (int p = lower_particles; p < model.particle_count(); ++p) {
+    const Eigen::Vector3d x = state.x.segment<3>(3 * p);
+    for (Eigen::Index t = 0; t < model.triangles.rows() / 2; ++t) {  // the lower sheet's
+      const Eigen::Vector3d a = state.x.segment<3>(3 * model.triangles(t, 0));
+      const Eigen::Vector3d b = state.x.segment<3>(3 * model.triangles(t, 1));
+      const Eigen::Vector3d c = state.x.segment<3>(3 * model.triangles(t, 2));
+      // barycentric coordinates of x in the triangle's projection on the xy plane
+      Eigen::Matrix2d edges;
+      edges << (b - a).head<2>(), (c - a).head<2>();
+      const Eigen::Vector2d l = edges.inverse() * (x - a).head<2>();
+      if (l.minCoeff() < 0.0 || l.sum() > 1.0) continue;
+      const double below_z = a.z() + l[0] * (b.z() - a.z()) + l[1] * (c.z() - a.z());
+      smallest_m = std::min(smallest_m, x.z() - below_z);
+    }
+  }
+  return smallest_m;
+}
+
+TEST(SelfCollision, TwoStackedSheetsDroppedOnTheFloorDoNotPassThroughEachOther) {
+  StackedSheets scene;
+  StepWorkspace workspace;
+  for (int n = 0; n < 450; ++n) {  // 1.5 s: they land at about 2 m/s, 7 mm per step
+    ASSERT_EQ(step(scene.model, scene.params, scene.state, workspace), StepStatus::ok) << n;
+    const SelfCollisionReport& r = workspace.self_collision;
+    if (getenv("TISSU_DEBUG"))
+      printf("%d cand %d prox %d imp %d zone %d res %d\n", n, r.candidates, r.proximities,
+             r.impacts, r.zone_particles, r.resolved);
+    ASSERT_TRUE(workspace.self_collision.resolved) << "step " << n;
+  }
+  EXPECT_GT(smallest_gap_above_lower_sheet(scene.model, scene.state), 0.5 * thickness_m);
+
+  // without self-collision the upper sheet sinks into the lower one
+  StackedSheets through;
+  through.params.self_collision.enabled = false;
+  for (int n = 0; n < 450; ++n) step(through.model, through.params, through.state, workspace);
+  EXPECT_LT(smallest_gap_above_lower_sheet(through.model, through.state), 0.5 * thickness_m);
+}
+
+TEST(SelfCollision, AFastSheetDoesNotTunnelThroughAPinnedOne) {
+  // the upper sheet hits the lower one, held at its corners, at 6 m/s: 2 cm per step, five times
+  // the thickness, so only the continuous test sees the crossing
+  StackedSheets scene;
+  scene.params.obstacles.clear();
+  for (int corner : {0, side - 1, side * (side - 1), side * side - 1})
+    scene.model.pinned[corner] = 1;
+  finalize_model(scene.model);
+  for (int p = side * side; p < scene.model.particle_count(); ++p) scene.state.v[3 * p + 2] = -6.0;
+  StepWorkspace workspace;
+  int impacts = 0;
+  for (int n = 0; n < 60; ++n) {
+    ASSERT_EQ(step(scene.model, scene.params, scene.state, workspace), StepStatus::ok) << n;
+    ASSERT_TRUE(workspace.self_collision.resolved) << "step " << n;
+    impacts += workspace.self_collision.impacts;
+  }
+  EXPECT_GT(impacts, 0);
+  EXPECT_GT(smallest_gap_above_lower_sheet(scene.model, scene.state), 0.0);
+}
+
+TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
+  StackedSheets scene;
+  // bring the upper sheet to 3 mm above the lower one
+  for (int p = side * side; p < scene.model.particle_count(); ++p)
+    scene.state.x[3 * p + 2] -= 0.047;
+  const std::vector<CandidatePair> pairs =
+      collision_candidates(scene.model, scene.state.x, scene.state.x, thickness_m);
+  bool lower_with_upper = false;
+  for (const CandidatePair& pair : pairs) {
+    for (int k = 1; k < 4; ++k) EXPECT_NE(pair.particle[0], pair.particle[k]);
+    lower_with_upper =
+        lower_with_upper || (pair.particle[0] < side * side) != (pair.particle[1] < side * side);
+  }
+  EXPECT_TRUE(lower_with_upper);
+  // a flat sheet alone: its close pairs in the broad phase are all farther apart than 4 mm
+  State flat_state;
+  const SpringModel flat = test::grid_model(side, side, spacing_m, 1e-4, 200.0, 0.01, flat_state);
+  EXPECT_FALSE(collision_candidates(flat, flat_state.x, flat_state.x, thickness_m).empty());
+  SelfCollisionOptions options;
+  SelfCollisionCache cache;
+  options.enabled = true;
+  options.thickness_m = thickness_m;
+  const SelfCollisionReport report =
+      resolve_self_collisions(flat, options, 1e-3, flat_state.x, {}, cache, flat_state);
+  EXPECT_EQ(report.proximities, 0);
+  EXPECT_EQ(report.impacts, 0);
+}
+
+TEST(SelfCollision, GivesTheSameStepWithOneAndTwoThreads) {
+  StackedSheets scene;
+  for (int n = 0; n < 60; ++n) step(scene.model, scene.params, scene.state);  // just before landing
+  const std::array<State, 2> ends =
+      test::step_with_one_and_two_threads(scene.model, scene.params, scene.state, 60);
+  EXPECT_EQ(ends[0].x, ends[1].x);
+  EXPECT_EQ(ends[0].v, ends[1].v);
+}
+
+}  // namespace
+}  // namespace tissu
