@@ -8,8 +8,10 @@
 namespace tissu {
 
 void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
-  const IndexedMesh mesh = scenario.cloth.grid ? make_grid_mesh(*scenario.cloth.grid)
-                                               : read_mesh(scenario.cloth.mesh_file);
+  IndexedMesh mesh = scenario.cloth.grid ? make_grid_mesh(*scenario.cloth.grid)
+                                         : read_mesh(scenario.cloth.mesh_file);
+  // refinement bisects triangles: quads are cut once, here (their shear springs become edges)
+  if (scenario.adaptive.enabled) mesh = triangulate_quads(mesh);
   build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
   if (scenario.cloth.grid && scenario.cloth.grid->pleats > 0) {
     place_particles(grid_initial_positions(*scenario.cloth.grid), lcc);

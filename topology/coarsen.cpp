@@ -17,6 +17,7 @@ struct Bisection {
   std::vector<Dart_handle> cut_edges;     ///< darts from the middle to each corner
   std::vector<Dart_handle> corner_faces;  ///< a dart of each parent face, not touching the middle
   std::vector<Vertex_handle> patch;       ///< the parent faces' vertices, middle excluded
+  double parent_edge_m = 0.0;             ///< rest length of the edge (a, b) undoing restores
 };
 
 std::vector<Dart_handle> outgoing_darts(ClothComplex& lcc, Vertex_handle v) {
@@ -57,7 +58,9 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   for (std::size_t i = 0; i < neighbours.size(); ++i) {
     for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
       if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
-      Bisection b{m, {}, {}, {}};
+      Bisection b{m, {}, {}, {}, 0.0};
+      b.parent_edge_m = std::sqrt(CGAL::squared_distance(
+          neighbours[i].first->info().rest_position, neighbours[j].first->info().rest_position));
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         b.patch.push_back(neighbours[k].first);
         if (k == i || k == j) continue;
@@ -136,6 +139,7 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
   for (Vertex_handle v : created) {
     const std::optional<Bisection> b = bisection_at(lcc, v);
     if (!b || !calm_around(lcc, *b, options, hysteresis)) continue;
+    if (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m) continue;
     undo(lcc, *b, settings);
     ++report.merges;
   }

@@ -169,4 +169,25 @@ void validate_indexed_mesh(const IndexedMesh& mesh) {
   check_edges(mesh);
 }
 
+IndexedMesh triangulate_quads(const IndexedMesh& mesh) {
+  IndexedMesh out{mesh.vertices, {}};
+  for (const std::vector<int>& f : mesh.faces) {
+    if (f.size() != 4) {
+      out.faces.push_back(f);
+      continue;
+    }
+    const auto length2 = [&](int a, int b) {
+      return (mesh.vertices[f[a]] - mesh.vertices[f[b]]).squaredNorm();
+    };
+    if (length2(0, 2) <= length2(1, 3)) {
+      out.faces.push_back({f[0], f[1], f[2]});
+      out.faces.push_back({f[0], f[2], f[3]});
+    } else {
+      out.faces.push_back({f[0], f[1], f[3]});
+      out.faces.push_back({f[1], f[2], f[3]});
+    }
+  }
+  return out;
+}
+
 }  // namespace tissu

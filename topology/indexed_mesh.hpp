@@ -27,4 +27,9 @@ class MeshError : public std::runtime_error {
 /// orientation). Throws MeshError naming the first offending vertex, face or edge.
 void validate_indexed_mesh(const IndexedMesh& mesh);
 
+/// `mesh` with each quad cut into two triangles along its shorter diagonal (the better-shaped
+/// pair), keeping the orientation; triangles are kept as they are. Adaptive refinement uses this
+/// once, before building, since it bisects triangles only.
+IndexedMesh triangulate_quads(const IndexedMesh& mesh);
+
 }  // namespace tissu

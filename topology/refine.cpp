@@ -60,7 +60,8 @@ bool bisect_along_longest_edge_path(ClothComplex& lcc, Dart_handle edge, std::si
 }
 
 bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
-  return (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
+  return (o.max_edge_length_m > 0.0 && rest_length_m(lcc, d) > o.max_edge_length_m) ||
+         (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
          (o.curvature_threshold_rad > 0.0 &&
           edge_dihedral_angle(lcc, d) > o.curvature_threshold_rad);
 }

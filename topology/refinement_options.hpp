@@ -14,6 +14,9 @@ struct RefinementOptions {
   /// Never create edges shorter than this in rest space (m): an edge is split only if its rest
   /// length is at least twice this.
   double min_edge_length_m = 0.01;
+  /// Refine edges longer than this in rest space (m), whatever the criteria, and never coarsen
+  /// back to them; 0 sets no maximum.
+  double max_edge_length_m = 0.0;
   /// Stop refining when the cloth has this many particles.
   int max_particles = 100000;
 };

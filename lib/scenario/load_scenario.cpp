@@ -126,11 +126,14 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
       adaptive.number_or("curvature", r.curvature_threshold_rad, between(0.0, M_PI, " (rad)"));
   r.min_edge_length_m =
       adaptive.number_or("min_edge_length", r.min_edge_length_m, positive(" (m)"));
+  r.max_edge_length_m = adaptive.number_or("max_edge_length", 0.0, non_negative(" (m)"));
   r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, 10'000'000);
   a.hysteresis =
       adaptive.number_or("hysteresis", a.hysteresis, {0.0, 0.999, false, "a number in [0, 1)"});
-  if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0) {
-    adaptive.fail("strain", "a positive \"strain\" or \"curvature\" threshold when adaptive");
+  if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0 &&
+      r.max_edge_length_m == 0.0) {
+    adaptive.fail("strain",
+                  "a positive \"strain\", \"curvature\" or \"max_edge_length\" when adaptive");
   }
   adaptive.finish();
   return a;
@@ -170,14 +173,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   if (top.has("self_collision")) {
     s.solver.self_collision = read_self_collision(top.object("self_collision"));
   }
-  if (top.has("adaptive")) {
-    s.adaptive = read_adaptive(top.object("adaptive"));
-    if (s.adaptive.enabled && s.cloth.grid && s.cloth.grid->cells == GridCells::quads) {
-      throw ScenarioError(name +
-                          ": adaptive: refinement needs a triangle cloth; set "
-                          "cloth.grid.cells to \"triangles\"");
-    }
-  }
+  if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"));
   if (top.has("output")) read_output(top.object("output"), s.output);
   if (top.has("render")) s.render = read_render(top.object("render"));
   top.finish();

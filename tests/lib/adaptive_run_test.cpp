@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -80,12 +81,22 @@ TEST(AdaptiveRun, ScenarioChecksTheAdaptiveSection) {
   };
   EXPECT_THAT(
       error_of({"adaptive={}"}),
-      HasSubstr("flag.json: adaptive.strain: expected a positive \"strain\" or \"curvature\""));
+      HasSubstr("flag.json: adaptive.strain: expected a positive \"strain\", \"curvature\" or "
+                "\"max_edge_length\""));
   EXPECT_THAT(error_of({"adaptive.curvature=4"}),
               HasSubstr("adaptive.curvature: expected a number between 0"));
-  EXPECT_THAT(error_of({"cloth.grid.cells=quads"}),
-              HasSubstr("adaptive: refinement needs a triangle cloth"));
-  EXPECT_EQ(error_of({"adaptive.enabled=false", "cloth.grid.cells=quads"}), "no error");
+}
+
+TEST(AdaptiveRun, AQuadClothIsCutIntoTrianglesOnceAndRefines) {
+  const Scenario scenario =
+      parse_scenario(waving_flag, "flag.json", {"cloth.grid.cells=quads", "simulation.frames=20"});
+  RunOptions options;
+  options.output_dir = test::fresh_temp_dir("adaptive_quads");
+  std::vector<int> faces;
+  options.on_frame = [&](const FrameStats& row) { faces.push_back(row.faces); };
+  ASSERT_TRUE(run_scenario(scenario, options).ok);
+  EXPECT_EQ(faces.front(), 2 * 10 * 6);  // each of the 10 x 6 quads cut in two
+  EXPECT_GT(*std::max_element(faces.begin(), faces.end()), faces.front());
 }
 
 /// Per face, the sharpest bend to a neighbour: the angle between their normals over the rest

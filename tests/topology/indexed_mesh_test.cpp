@@ -139,5 +139,21 @@ TEST(ValidateIndexedMesh, RejectsInconsistentOrientation) {
                         "same direction"));
 }
 
+TEST(TriangulateQuads, CutsEachQuadAlongItsShorterDiagonalAndKeepsTriangles) {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.vertices[2] = {1.2, 0, 1.2};  // diagonal 1-3 now shorter than 0-2
+  const IndexedMesh cut = triangulate_quads(mesh);
+  EXPECT_EQ(cut.vertices, mesh.vertices);
+  ASSERT_EQ(cut.faces.size(), 3u);
+  EXPECT_EQ(cut.faces[0], (std::vector<int>{0, 1, 3}));
+  EXPECT_EQ(cut.faces[1], (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(cut.faces[2], (std::vector<int>{1, 4, 2}));
+  EXPECT_EQ(validation_message(cut), "");  // still consistently oriented
+
+  mesh.vertices[2] = {1, 0, 1};
+  mesh.vertices[0] = {0.2, 0, 0.2};  // now 0-2 is the shorter one
+  EXPECT_EQ(triangulate_quads(mesh).faces[0], (std::vector<int>{0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace tissu

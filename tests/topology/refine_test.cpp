@@ -4,6 +4,7 @@
 
 #include "cloth_test_support.hpp"
 #include "topology/cloth_properties.hpp"
+#include "topology/coarsen.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -134,6 +135,23 @@ TEST_F(RefineTest, LongestEdgePropagationKeepsRightIsoscelesTrianglesSimilar) {
   for (auto f = lcc.one_dart_per_cell<2>().begin(); f != lcc.one_dart_per_cell<2>().end(); ++f) {
     EXPECT_NEAR(smallest_rest_angle(lcc, f), M_PI / 4.0, 1e-9);
   }
+}
+
+TEST_F(RefineTest, MaxEdgeLengthRefinesAFlatSheetAndCoarseningKeepsIt) {
+  // 12 x 8 cells of 0.125 m x 0.1125 m: every edge must end at most 0.1 m long
+  RefinementOptions refinement;
+  refinement.max_edge_length_m = 0.1;
+  refinement.min_edge_length_m = 0.01;
+  while (refine(lcc, refinement, springs).splits > 0) {
+  }
+  expect_valid_and_mass_conserved();
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    EXPECT_LE(lcc.info(d).edge.rest_length, 0.1);
+  }
+  const std::size_t refined = lcc.vertex_attributes().size();
+  EXPECT_GT(refined, 117u);
+  EXPECT_EQ(coarsen(lcc, refinement, 0.5, springs).merges, 0);  // flat and calm, but not longer
+  EXPECT_EQ(lcc.vertex_attributes().size(), refined);
 }
 
 }  // namespace
