@@ -16,9 +16,12 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
                                                      const Eigen::Vector3d& from,
                                                      const Eigen::Vector3d& to, double time_s) {
   const double length_m = (to - from).norm();
-  if (!(length_m > 0.0) ||
-      surface_distance(obstacle, from, time_s).distance_m < obstacle.thickness_m) {
-    return std::nullopt;  // not moving, or leaving a contact it started in
+  // a particle that starts in contact, at the thickness to round-off (where the last step left
+  // it) or closer, and ends clear is leaving: the end-position test handles its contacts
+  const double start_clearance_m =
+      surface_distance(obstacle, from, time_s).distance_m - obstacle.thickness_m;
+  if (!(length_m > 0.0) || start_clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
+    return std::nullopt;
   }
   double travelled = 0.0;  // fraction of the path
   for (int step = 0; step < 64; ++step) {

@@ -65,12 +65,18 @@ TEST(Drape, AClothDroppedOnABallStaysOutsideItAndDoesNotPassThroughItself) {
   options.on_surface = [&](int frame, const MaterialSurface& s) {
     if (frame % 10 == 0) surfaces.push_back(s);
   };
-  std::vector<double> mass_kg;
-  options.on_frame = [&](const FrameStats& row) { mass_kg.push_back(row.total_mass); };
+  std::vector<double> mass_kg, kinetic_j;
+  options.on_frame = [&](const FrameStats& row) {
+    mass_kg.push_back(row.total_mass);
+    kinetic_j.push_back(row.kinetic_energy);
+  };
   const RunResult result = run_scenario(scenario, options);
   ASSERT_TRUE(result.ok) << result.failure;
 
   for (double kg : mass_kg) EXPECT_NEAR(kg, 0.2 * 0.8 * 0.8, 1e-12);
+  // it is settling: nothing keeps a velocity its position does not follow (0.1 m/s on average
+  // would be 4e-4 J)
+  EXPECT_LT(kinetic_j.back(), 4e-4) << "J";
   const Eigen::Vector3d centre(0.0, 0.0, 0.25);
   ASSERT_EQ(surfaces.size(), 5u);
   // it has landed: its centre rests on top of the ball, its corners hang or lie lower

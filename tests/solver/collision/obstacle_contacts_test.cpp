@@ -140,6 +140,18 @@ TEST(ObstacleContacts, AFastParticleDoesNotTunnelThroughAThinWall) {
   EXPECT_NEAR(state.x.x(), -0.003, 1e-12);  // stopped against it
 }
 
+TEST(ObstacleContacts, AParticleLeavingTheFloorIsLetGo) {
+  // it starts exactly at the thickness, where a contact leaves it, and jumps up and sideways
+  Obstacle floor;
+  State state;
+  const SpringModel model =
+      lone_particle({0.0, 0.0, floor.thickness_m}, Eigen::Vector3d(1.0, 0.0, 2.0), state);
+  SolverParams params = params_with(Integrator::implicit_euler, floor);
+  for (int n = 0; n < 10; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_NEAR(state.x.x(), 0.01, 1e-12);
+  EXPECT_GT(state.x.z(), floor.thickness_m + 0.015);
+}
+
 TEST(ObstacleContacts, AMovingObstacleCarriesTheParticleAndPinsStay) {
   // a floor rising at 1 m/s lifts a particle resting on it; a pinned particle is not touched
   Obstacle lift;
