@@ -105,6 +105,16 @@ IndexedMesh obstacle_mesh(const Obstacle& obstacle, double time_s) {
                           obstacle_mesh_segments);
     case ObstacleShape::box:
       return box_mesh(position, obstacle.half_extents_m, obstacle.rotation);
+    case ObstacleShape::mesh: {
+      IndexedMesh mesh;
+      for (const Eigen::Vector3d& corner : obstacle.surface->triangle_corners()) {
+        mesh.vertices.push_back(corner + offset);
+      }
+      for (int t = 0; 3 * t < static_cast<int>(mesh.vertices.size()); ++t) {
+        mesh.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+      }
+      return mesh;
+    }
   }
   return {};
 }

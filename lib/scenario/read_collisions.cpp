@@ -1,7 +1,11 @@
 #include "lib/scenario/read_collisions.hpp"
 
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <limits>
+
+#include "lib/mesh_io/read_mesh.hpp"
+#include "topology/mesh_obstacle.hpp"
 
 namespace tissu {
 namespace {
@@ -33,9 +37,26 @@ Eigen::Matrix3d read_rotation(JsonObjectReader rotation) {
   return Eigen::AngleAxisd(angle_rad, axis).toRotationMatrix();
 }
 
+/// A mesh file (relative to the scenario's folder), scaled about its origin then moved by
+/// "position", as a distance field.
+std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o) {
+  const std::filesystem::path given = o.string("file");
+  const std::filesystem::path file =
+      given.is_absolute() ? given : std::filesystem::path(o.file()).parent_path() / given;
+  const double scale = o.number_or("scale", 1.0, positive(""));
+  const Eigen::Vector3d position = o.vector3_or("position", Eigen::Vector3d::Zero());
+  try {
+    IndexedMesh mesh = read_mesh(file);
+    for (Eigen::Vector3d& x : mesh.vertices) x = scale * x + position;
+    return make_mesh_surface(mesh);
+  } catch (const MeshError& e) {
+    throw ScenarioError(o.file() + ": " + o.key_path("file") + ": " + e.what());
+  }
+}
+
 Obstacle read_obstacle(JsonObjectReader o) {
   Obstacle ob;
-  const std::string type = o.choice("type", {"plane", "sphere", "capsule", "box"});
+  const std::string type = o.choice("type", {"plane", "sphere", "capsule", "box", "mesh"});
   if (type == "plane") {
     ob.shape = ObstacleShape::plane;
     ob.position = o.vector3_or("point", ob.position);
@@ -49,6 +70,9 @@ Obstacle read_obstacle(JsonObjectReader o) {
     ob.position = o.vector3("from");
     ob.axis_end = o.vector3("to");
     ob.radius_m = o.number("radius", positive(" (m)"));
+  } else if (type == "mesh") {
+    ob.shape = ObstacleShape::mesh;
+    ob.surface = read_mesh_surface(o);
   } else {
     ob.shape = ObstacleShape::box;
     ob.position = o.vector3("center");

@@ -75,6 +75,8 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d
                        obstacle.radius_m);
     case ObstacleShape::box:
       return box_distance(obstacle, position, x);
+    case ObstacleShape::mesh:
+      return obstacle.surface->distance(x - offset);
   }
   return {};
 }

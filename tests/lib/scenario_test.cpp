@@ -5,7 +5,10 @@
 
 #include <filesystem>
 
+#include "lib/mesh_io/write_mesh.hpp"
+#include "lib/obstacle_mesh.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "tests/test_temp_dir.hpp"
 
 namespace tissu {
 namespace {
@@ -261,6 +264,29 @@ TEST(Scenario, ReadsSelfCollision) {
               HasSubstr("self_collision.thickness: expected a positive number (m), got 0"));
   EXPECT_THAT(with("self_collision", R"({ "thicknes": 0.01 })"),
               HasSubstr("did you mean 'thickness'?"));
+}
+
+TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
+  // the cube [-1, 1]^3, faces outwards, written as OBJ
+  IndexedMesh cube;
+  for (int k = 0; k < 8; ++k)
+    cube.vertices.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  cube.faces = {{4, 5, 7, 6}, {0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle") / "cube.obj";
+  write_mesh(file, cube, MeshFormat::obj);
+  const Scenario s = parse_scenario(minimal, "dir/s.json",
+                                    {R"(obstacles=[{ "type": "mesh", "file": ")" + file.string() +
+                                     R"(", "scale": 0.5, "position": [0, 0, 1] }])"});
+  ASSERT_EQ(s.solver.obstacles.size(), 1u);
+  const Obstacle& o = s.solver.obstacles[0];
+  EXPECT_EQ(o.shape, ObstacleShape::mesh);
+  EXPECT_NEAR(surface_distance(o, Eigen::Vector3d(0, 0, 2), 0.0).distance_m, 0.5, 1e-12);
+  const IndexedMesh drawn = obstacle_mesh(o, 0.0);  // what the renderer shows
+  EXPECT_EQ(drawn.faces.size(), 12u);
+  for (const Eigen::Vector3d& x : drawn.vertices) EXPECT_NEAR(std::abs(x.x()), 0.5, 1e-12);
+
+  EXPECT_THAT(with("obstacles", R"([{ "type": "mesh", "file": "no_such.obj" }])"),
+              HasSubstr("dir/s.json: obstacles[0].file: dir/no_such.obj"));
 }
 
 TEST(Scenario, BadObstaclesAreNamed) {
