@@ -94,18 +94,20 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       status = projective_dynamics_step(model, params, state, workspace);
       break;
   }
-  // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
-  const double end_time_s = state.time + params.time_step;
-  workspace.obstacle_contacts =
-      resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
-                                workspace.step_start_x, state, workspace.touching_obstacle);
-  workspace.self_collision = resolve_self_collisions(
-      model, params.self_collision, params.time_step, workspace.step_start_x,
-      workspace.touching_obstacle, workspace.self_collision_pairs, state);
-  state.time += params.time_step;
-  if (status == StepStatus::non_finite || !state.x.allFinite() || !state.v.allFinite()) {
-    return StepStatus::non_finite;
+  const bool finite =
+      status != StepStatus::non_finite && state.x.allFinite() && state.v.allFinite();
+  if (finite) {  // a NaN would leave the hash cells of self-collision undefined
+    // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
+    const double end_time_s = state.time + params.time_step;
+    workspace.obstacle_contacts =
+        resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
+                                  workspace.step_start_x, state, workspace.touching_obstacle);
+    workspace.self_collision = resolve_self_collisions(
+        model, params.self_collision, params.time_step, workspace.step_start_x,
+        workspace.touching_obstacle, workspace.self_collision_pairs, state);
   }
+  state.time += params.time_step;
+  if (!finite || !state.x.allFinite() || !state.v.allFinite()) return StepStatus::non_finite;
   return status;
 }
 

@@ -118,8 +118,8 @@ void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const C
       for (int k = lo.z(); k <= hi.z(); ++k) {
         table.for_each_in(CellGrid::key(i, j, k), [&](int b) {
           if (b <= first || !box.intersects(boxes[b])) return;
-          const Eigen::Vector3i first = grid.cell_of(box.min().cwiseMax(boxes[b].min()));
-          if (first == Eigen::Vector3i(i, j, k)) visit(b);
+          const Eigen::Vector3i overlap_cell = grid.cell_of(box.min().cwiseMax(boxes[b].min()));
+          if (overlap_cell == Eigen::Vector3i(i, j, k)) visit(b);
         });
       }
     }

@@ -135,6 +135,14 @@ TEST(SelfCollision, AFastSheetDoesNotTunnelThroughAPinnedOne) {
   EXPECT_GT(smallest_gap_above_lower_sheet(scene.model, scene.state), 0.0);
 }
 
+TEST(SelfCollision, ANonFiniteStateIsReportedNotSearched) {
+  StackedSheets scene;
+  scene.state.x[7] = std::numeric_limits<double>::quiet_NaN();
+  StepWorkspace workspace;
+  EXPECT_EQ(step(scene.model, scene.params, scene.state, workspace), StepStatus::non_finite);
+  EXPECT_EQ(workspace.self_collision.candidates, 0);
+}
+
 TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
   StackedSheets scene;
   // bring the upper sheet to 3 mm above the lower one
