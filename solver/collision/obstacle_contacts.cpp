@@ -39,11 +39,24 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
 bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vector3d& from,
              Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v) {
   SurfaceDistance surface = surface_distance(obstacle, x, time_s);
-  if (surface.distance_m >= obstacle.thickness_m) {
-    const std::optional<Eigen::Vector3d> contact = first_contact_on_path(obstacle, from, x, time_s);
-    if (!contact) return false;
-    x = *contact;
-    surface = surface_distance(obstacle, x, time_s);
+  const bool ends_near = surface.distance_m < obstacle.thickness_m;
+  // ending near the far side of a part thinner than the step means it went through
+  SurfaceDistance at_start;
+  bool crossed = false;
+  if (ends_near) {
+    at_start = surface_distance(obstacle, from, time_s);
+    crossed = at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
+  }
+  if (!ends_near || crossed) {
+    if (const auto contact = first_contact_on_path(obstacle, from, x, time_s)) {
+      x = *contact;  // where the path first came within the thickness, on its own side
+      surface = surface_distance(obstacle, x, time_s);
+    } else if (!ends_near) {
+      return false;
+    } else {
+      // it started touching: measure it on the side it started from
+      surface = {at_start.distance_m + (x - from).dot(at_start.normal), at_start.normal};
+    }
   }
   const Eigen::Vector3d& n = surface.normal;
   x += std::max(0.0, obstacle.thickness_m - surface.distance_m) * n;

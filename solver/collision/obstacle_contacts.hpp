@@ -22,11 +22,12 @@ namespace tissu {
 ///   the change of v_t, so that x_{n+1} - x_n = h v_{n+1} holds along the surface as it does in the
 ///   integrator. A particle on a slope of angle a then sticks when tan a <= mu_s and otherwise
 ///   accelerates at g (sin a - mu_k cos a), as Coulomb's law says.
-/// A particle whose step ends clear of an obstacle but whose path from `start_x` crossed it (a
-/// thin obstacle or a fast particle) is stopped where the path first touches it, then treated the
-/// same way: no tunnelling. Obstacles are resolved one after the other, at their position at
-/// `time_s` (the end of the step). Pinned particles are left alone. Sets touching[p] to 1 for
-/// each particle in contact (#P, resized) and returns the number of contacts.
+/// A particle whose step ends clear of an obstacle, or near its far side, but whose path from
+/// `start_x` crossed it (a thin obstacle or a fast particle) is stopped where the path first
+/// touches it, or, if it started touching, kept on the side it started from: no tunnelling.
+/// Obstacles are resolved one after the other, at their position at `time_s` (the end of the step).
+/// Pinned particles are left alone. Sets touching[p] to 1 for each particle in contact (#P,
+/// resized) and returns the number of contacts.
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
                               State& state, std::vector<std::uint8_t>& touching);

@@ -71,12 +71,19 @@ double inverse_effective_mass(const Eigen::VectorXd& inverse_mass, const Contact
   return sum;
 }
 
-/// Adds, to particle k of the pair, w_k / m_k times `impulse` (a mass-weighted share of a change
-/// of the pair's relative position or velocity that conserves momentum, since sum_k w_k = 0).
-void share(const Eigen::VectorXd& inverse_mass, const ContactPair& c,
-           const Eigen::Vector3d& impulse, Eigen::VectorXd& out) {
+/// Adds, to particle k of the pair, w_k / m_k times `impulse`: a mass-weighted share of a change
+/// `wanted` of the pair's relative position or velocity (impulse = wanted / sum_k w_k^2 / m_k),
+/// which conserves momentum since sum_k w_k = 0. No particle's share exceeds |wanted|: when the
+/// heavy end of a pair cannot move (pinned, or held by an obstacle), the formula would throw a
+/// light end by |wanted| / w_k, unboundedly far for a small weight; impact zones handle the rest.
+void share(const Eigen::VectorXd& inverse_mass, const ContactPair& c, const Eigen::Vector3d& wanted,
+           double pair_inverse_mass, Eigen::VectorXd& out) {
+  const double limit = wanted.norm();
   for (int k = 0; k < 4; ++k) {
-    out.segment<3>(3 * c.particle[k]) += c.weight[k] * inverse_mass[c.particle[k]] * impulse;
+    Eigen::Vector3d d = c.weight[k] * inverse_mass[c.particle[k]] / pair_inverse_mass * wanted;
+    const double size = d.norm();
+    if (size > limit) d *= limit / size;
+    out.segment<3>(3 * c.particle[k]) += d;
   }
 }
 
@@ -99,16 +106,16 @@ void repel(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& 
     const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
     if (!(pair_inverse_mass > 0.0)) continue;
     const Eigen::Vector3d& n = c.normal;
-    share(inverse_mass, c, (o.thickness_m - c.distance_m) / pair_inverse_mass * n, push.position);
+    share(inverse_mass, c, (o.thickness_m - c.distance_m) * n, pair_inverse_mass, push.position);
     const Eigen::Vector3d v_rel = relative(c, state.v);
     const double v_n = v_rel.dot(n);
     if (v_n < 0.0) {
-      share(inverse_mass, c, -v_n / pair_inverse_mass * n, push.velocity);
+      share(inverse_mass, c, -v_n * n, pair_inverse_mass, push.velocity);
       const Eigen::Vector3d v_t = v_rel - v_n * n;
       const double speed_t = v_t.norm();
       if (speed_t > 0.0) {
         const double slowed = std::min(o.friction * -v_n / speed_t, 1.0);
-        share(inverse_mass, c, -slowed / pair_inverse_mass * v_t, friction.velocity);
+        share(inverse_mass, c, -slowed * v_t, pair_inverse_mass, friction.velocity);
       }
     }
     count_pair(c, push);
@@ -127,7 +134,7 @@ void stop_crossings(const Eigen::VectorXd& inverse_mass, const std::vector<Conta
     const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
     const double approach_m = relative(c, displacement).dot(c.normal);
     if (!(pair_inverse_mass > 0.0) || approach_m >= 0.0) continue;
-    share(inverse_mass, c, -approach_m / pair_inverse_mass * c.normal, stop.position);
+    share(inverse_mass, c, -approach_m * c.normal, pair_inverse_mass, stop.position);
     count_pair(c, stop);
   }
   stop.velocity = stop.position / h;
