@@ -149,8 +149,6 @@ std::vector<CandidatePair> collision_candidates(const SpringModel& model,
   const int triangles = static_cast<int>(model.triangles.rows());
   const int edges = static_cast<int>(model.surface_edges.rows());
   if (triangles == 0) return {};
-  const CellGrid grid{std::max(2.0 * mean_edge_length_m(model, end_x), 4.0 * margin_m)};
-
   std::vector<Box> vertex_box(particles), triangle_box(triangles), edge_box(edges);
   for (int p = 0; p < particles; ++p) {
     vertex_box[p] = swept_box<1>({p}, start_x, end_x, margin_m);
@@ -163,6 +161,15 @@ std::vector<CandidatePair> collision_candidates(const SpringModel& model,
     edge_box[e] = swept_box<2>({model.surface_edges(e, 0), model.surface_edges(e, 1)}, start_x,
                                end_x, 0.5 * margin_m);
   }
+
+  // cells twice the mean edge, or larger if a box is more than 8 cells wide: a cloth that is
+  // blowing up (m/s in the hundreds) must not fill the table with millions of cells
+  double widest_m = 0.0;
+  for (const std::vector<Box>* boxes : {&vertex_box, &triangle_box, &edge_box}) {
+    for (const Box& box : *boxes) widest_m = std::max(widest_m, box.sizes().maxCoeff());
+  }
+  const CellGrid grid{
+      std::max({2.0 * mean_edge_length_m(model, end_x), 4.0 * margin_m, widest_m / 8.0})};
 
   const CellTable triangle_table(triangle_box, grid);
   std::vector<CandidatePair> pairs = collect_in_order(particles, [&](int p, auto& out) {

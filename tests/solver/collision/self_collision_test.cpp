@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <limits>
 
 #include "solver/collision/collision_pairs.hpp"
@@ -141,6 +142,18 @@ TEST(SelfCollision, ANonFiniteStateIsReportedNotSearched) {
   StepWorkspace workspace;
   EXPECT_EQ(step(scene.model, scene.params, scene.state, workspace), StepStatus::non_finite);
   EXPECT_EQ(workspace.self_collision.candidates, 0);
+}
+
+TEST(SelfCollision, AParticleFlungFarStillHashesInBoundedTime) {
+  // a blowing-up step: one particle 1 km away along the diagonal; at 6 cm cells its swept box
+  // would cover 10^13 of them
+  StackedSheets scene;
+  Eigen::VectorXd end_x = scene.state.x;
+  end_x.segment<3>(3 * 5) += Eigen::Vector3d(1e3, 1e3, 1e3);
+  const std::vector<CandidatePair> pairs =
+      collision_candidates(scene.model, scene.state.x, end_x, thickness_m);
+  EXPECT_TRUE(std::any_of(pairs.begin(), pairs.end(),
+                          [](const CandidatePair& p) { return p.particle[0] == 5; }));
 }
 
 TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
