@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/collision/primitive_distance.hpp"
+
 namespace tissu {
 namespace {
 
@@ -13,14 +15,6 @@ SurfaceDistance from_core(const Eigen::Vector3d& x, const Eigen::Vector3d& core,
   const Eigen::Vector3d out = x - core;
   const double r = out.norm();
   return {r - radius_m, r > 0.0 ? Eigen::Vector3d(out / r) : fallback_normal};
-}
-
-Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a,
-                                   const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return a + t * ab;
 }
 
 SurfaceDistance box_distance(const Obstacle& box, const Eigen::Vector3d& centre,
@@ -70,9 +64,12 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d
       return {(x - position).dot(obstacle.normal), obstacle.normal};
     case ObstacleShape::sphere:
       return from_core(x, position, obstacle.radius_m);
-    case ObstacleShape::capsule:
-      return from_core(x, nearest_on_segment(x, position, obstacle.axis_end + offset),
-                       obstacle.radius_m);
+    case ObstacleShape::capsule: {
+      const Eigen::Vector3d end = obstacle.axis_end + offset;
+      const Eigen::Vector3d core =
+          position + nearest_on_segment(x, position, end) * (end - position);
+      return from_core(x, core, obstacle.radius_m);
+    }
     case ObstacleShape::box:
       return box_distance(obstacle, position, x);
     case ObstacleShape::mesh:

@@ -4,7 +4,6 @@
 #include <limits>
 
 namespace tissu {
-namespace {
 
 double nearest_on_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& from,
                           const Eigen::Vector3d& to) {
@@ -12,8 +11,6 @@ double nearest_on_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& from,
   const double length2 = d.squaredNorm();
   return length2 > 0.0 ? std::clamp((p - from).dot(d) / length2, 0.0, 1.0) : 0.0;
 }
-
-}  // namespace
 
 Eigen::Vector3d nearest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                     const Eigen::Vector3d& b, const Eigen::Vector3d& c) {

@@ -6,6 +6,11 @@
 
 namespace tissu {
 
+/// Parameter t in [0, 1] of the point from + t (to - from) of a segment nearest to p; 0 for a
+/// segment of zero length.
+double nearest_on_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& from,
+                          const Eigen::Vector3d& to);
+
 /// Barycentric coordinates (of a, b, c) of the point of triangle abc nearest to p: the projection
 /// on its plane when it falls inside, else the nearest point of its nearest edge (Ericson,
 /// Real-Time Collision Detection, 2005, section 5.1.5). A degenerate triangle gives its nearest
