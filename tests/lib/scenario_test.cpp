@@ -8,6 +8,7 @@
 #include "lib/mesh_io/write_mesh.hpp"
 #include "lib/obstacle_mesh.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "tests/test_meshes.hpp"
 #include "tests/test_temp_dir.hpp"
 
 namespace tissu {
@@ -267,11 +268,7 @@ TEST(Scenario, ReadsSelfCollision) {
 }
 
 TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
-  // the cube [-1, 1]^3, faces outwards, written as OBJ
-  IndexedMesh cube;
-  for (int k = 0; k < 8; ++k)
-    cube.vertices.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-  cube.faces = {{4, 5, 7, 6}, {0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const IndexedMesh cube = test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);  // [-1, 1]^3
   const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle") / "cube.obj";
   write_mesh(file, cube, MeshFormat::obj);
   const Scenario s = parse_scenario(minimal, "dir/s.json",

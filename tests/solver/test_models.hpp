@@ -15,6 +15,18 @@
 
 namespace tissu::test {
 
+/// One free particle of 10 g at `x`, moving at `v`.
+inline SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d& v, State& state) {
+  SpringModel model;
+  model.mass = Eigen::VectorXd::Constant(1, 0.01);
+  model.pinned.assign(1, 0);
+  model.springs.resize(0, 2);
+  finalize_model(model);
+  state.x = x;
+  state.v = v;
+  return model;
+}
+
 /// `particles` particles scattered in the unit cube, `springs` springs between random distinct
 /// pairs with rest lengths 0.7 to 1.3 times their current length (some stretched, some
 /// compressed), random stiffness, damping and masses, and `triangles` random triangles. Fills x

@@ -5,20 +5,16 @@
 #include <gtest/gtest.h>
 
 #include "solver/step.hpp"
+#include "tests/solver/test_models.hpp"
+#include "tests/test_meshes.hpp"
 
 namespace tissu {
 namespace {
 
-/// The cube [-1, 1]^3 as 12 triangles facing outwards; or, open, its top face only.
+/// The cube [-1, 1]^3 facing outwards; or, open, its top face only (its last two triangles).
 IndexedMesh cube(bool closed = true) {
-  IndexedMesh m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-  m.faces = {{4, 5, 7, 6}};  // +z
-  if (closed) {
-    m.faces.insert(m.faces.end(),
-                   {{0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
-  }
+  IndexedMesh m = test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);
+  if (!closed) m.faces = {m.faces[10], m.faces[11]};
   return m;
 }
 
@@ -56,12 +52,9 @@ TEST(MeshSurface, AParticleDroppedOnAMovedMeshRestsOnTop) {
   block.surface = make_mesh_surface(cube());
   block.motion.key_times_s = {0.0};
   block.motion.key_offsets_m = {Eigen::Vector3d(0.0, 0.0, -1.0)};  // top face at z = 0
-  SpringModel model;
-  model.mass = Eigen::VectorXd::Constant(1, 0.01);
-  model.pinned.assign(1, 0);
-  model.springs.resize(0, 2);
-  finalize_model(model);
-  State state{Eigen::Vector3d(0.3, -0.2, 0.5), Eigen::Vector3d::Zero(), 0.0};
+  State state;
+  const SpringModel model =
+      test::lone_particle(Eigen::Vector3d(0.3, -0.2, 0.5), Eigen::Vector3d::Zero(), state);
   SolverParams params;
   params.time_step = 1.0 / 300.0;
   params.obstacles = {block};

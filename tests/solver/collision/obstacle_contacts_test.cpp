@@ -14,18 +14,6 @@ namespace {
 
 constexpr double g = 9.81;  // m/s^2
 
-/// One free particle of 10 g at `x`, moving at `v`.
-SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d& v, State& state) {
-  SpringModel model;
-  model.mass = Eigen::VectorXd::Constant(1, 0.01);
-  model.pinned.assign(1, 0);
-  model.springs.resize(0, 2);
-  finalize_model(model);
-  state.x = x;
-  state.v = v;
-  return model;
-}
-
 /// A plane through the origin tilted by `slope_rad` about x, rising towards +y.
 Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
   Obstacle plane;
@@ -50,7 +38,7 @@ TEST_P(EveryIntegrator, AParticleRestingOnAFloorStaysOnItFor10000Steps) {
   Obstacle floor;
   floor.thickness_m = 0.004;
   State state;
-  const SpringModel model = lone_particle({0.1, 0.2, 0.05}, Eigen::Vector3d::Zero(), state);
+  const SpringModel model = test::lone_particle({0.1, 0.2, 0.05}, Eigen::Vector3d::Zero(), state);
   const SolverParams params = params_with(GetParam(), floor);
   StepWorkspace workspace;
   for (int n = 0; n < 10000; ++n) {
@@ -68,7 +56,7 @@ TEST_P(EveryIntegrator, AParticleDroppedOnASphereEndsOutsideIt) {
   ball.radius_m = 0.3;
   ball.static_friction = ball.kinetic_friction = 0.3;
   State state;
-  const SpringModel model = lone_particle({0.05, 0.0, 1.0}, Eigen::Vector3d::Zero(), state);
+  const SpringModel model = test::lone_particle({0.05, 0.0, 1.0}, Eigen::Vector3d::Zero(), state);
   const SolverParams params = params_with(GetParam(), ball);
   StepWorkspace workspace;
   for (int n = 0; n < 3000; ++n) {
@@ -88,7 +76,7 @@ TEST(ObstacleFriction, StaticFrictionHoldsAParticleOnASlope) {
   const Obstacle plane = slope(20.0 * M_PI / 180.0, 0.5, 0.4);
   State state;
   const Eigen::Vector3d start = plane.thickness_m * plane.normal;
-  const SpringModel model = lone_particle(start, Eigen::Vector3d::Zero(), state);
+  const SpringModel model = test::lone_particle(start, Eigen::Vector3d::Zero(), state);
   const SolverParams params = params_with(Integrator::symplectic_euler, plane);
   for (int n = 0; n < 2000; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
   EXPECT_LT((state.x - start).norm(), 1e-12);
@@ -102,7 +90,7 @@ TEST(ObstacleFriction, KineticFrictionSlowsASlidingParticleAsCoulombSays) {
   const Eigen::Vector3d down_slope(0.0, -std::cos(angle_rad), -std::sin(angle_rad));
   State state;
   const Eigen::Vector3d start = plane.thickness_m * plane.normal;
-  const SpringModel model = lone_particle(start, Eigen::Vector3d::Zero(), state);
+  const SpringModel model = test::lone_particle(start, Eigen::Vector3d::Zero(), state);
   const SolverParams params = params_with(Integrator::symplectic_euler, plane);
   const double duration_s = 1.0;
   for (int n = 0; n < 1000; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
@@ -114,7 +102,7 @@ TEST(ObstacleFriction, KineticFrictionSlowsASlidingParticleAsCoulombSays) {
 
   // a particle thrown up-flat on a level floor stops after v^2 / (2 mu_k g)
   const Obstacle floor = slope(0.0, 0.3, 0.3);
-  const SpringModel thrown = lone_particle(start, Eigen::Vector3d(2.0, 0.0, 0.0), state);
+  const SpringModel thrown = test::lone_particle(start, Eigen::Vector3d(2.0, 0.0, 0.0), state);
   const SolverParams on_floor = params_with(Integrator::symplectic_euler, floor);
   for (int n = 0; n < 2000; ++n) ASSERT_EQ(step(thrown, on_floor, state), StepStatus::ok);
   const double stopping_m = 2.0 * 2.0 / (2.0 * 0.3 * g);
@@ -131,7 +119,7 @@ TEST(ObstacleContacts, AFastParticleDoesNotTunnelThroughAThinWall) {
   wall.thickness_m = 0.002;
   State state;
   const SpringModel model =
-      lone_particle({-0.52, 0.0, 0.0}, Eigen::Vector3d(50.0, 0.0, 0.0), state);
+      test::lone_particle({-0.52, 0.0, 0.0}, Eigen::Vector3d(50.0, 0.0, 0.0), state);
   SolverParams params = params_with(Integrator::symplectic_euler, wall);
   params.environment.gravity.setZero();
   for (int n = 0; n < 40; ++n) {
@@ -168,7 +156,7 @@ TEST(ObstacleContacts, AParticleLeavingTheFloorIsLetGo) {
   Obstacle floor;
   State state;
   const SpringModel model =
-      lone_particle({0.0, 0.0, floor.thickness_m}, Eigen::Vector3d(1.0, 0.0, 2.0), state);
+      test::lone_particle({0.0, 0.0, floor.thickness_m}, Eigen::Vector3d(1.0, 0.0, 2.0), state);
   SolverParams params = params_with(Integrator::implicit_euler, floor);
   for (int n = 0; n < 10; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
   EXPECT_NEAR(state.x.x(), 0.01, 1e-12);
@@ -180,7 +168,8 @@ TEST(ObstacleContacts, AMovingObstacleCarriesTheParticleAndPinsStay) {
   Obstacle lift;
   lift.motion.velocity = {0.0, 0.0, 1.0};
   State state;
-  SpringModel model = lone_particle({0.0, 0.0, lift.thickness_m}, Eigen::Vector3d::Zero(), state);
+  SpringModel model =
+      test::lone_particle({0.0, 0.0, lift.thickness_m}, Eigen::Vector3d::Zero(), state);
   const SolverParams params = params_with(Integrator::implicit_euler, lift);
   for (int n = 0; n < 500; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
   EXPECT_NEAR(state.x.z(), 0.5 + lift.thickness_m, 1e-9);
