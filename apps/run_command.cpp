@@ -56,4 +56,16 @@ int execute(const RunCommand& command) {
   return 1;
 }
 
+int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,
+             const std::string& output_dir) {
+  CLI::App app{description};
+  RunCommand run;
+  run.scenario = scenario;
+  run.output_dir = output_dir;
+  app.add_option("--scenario", run.scenario, "scenario file")->capture_default_str();
+  add_run_options(app, run);
+  CLI11_PARSE(app, argc, argv);
+  return execute(run);
+}
+
 }  // namespace tissu

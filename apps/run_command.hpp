@@ -23,4 +23,9 @@ void add_run_options(CLI::App& app, RunCommand& command);
 /// 0 on success, 1 for bad input, 2 when the simulation failed.
 int execute(const RunCommand& command);
 
+/// A demo program's main: --scenario (defaulting to `scenario`) plus the run options, output to
+/// `output_dir` unless --out says otherwise; returns execute()'s exit status.
+int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,
+             const std::string& output_dir);
+
 }  // namespace tissu

@@ -10,8 +10,12 @@ namespace tissu {
 void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
   IndexedMesh mesh = scenario.cloth.grid ? make_grid_mesh(*scenario.cloth.grid)
                                          : read_mesh(scenario.cloth.mesh_file);
-  // refinement bisects triangles: quads are cut once, here (their shear springs become edges)
-  if (scenario.adaptive.enabled) mesh = triangulate_quads(mesh);
+  // refinement (adaptive, or around crack tips) bisects triangles: quads are cut once, here
+  // (their shear springs become edges)
+  const bool refines =
+      scenario.adaptive.enabled ||
+      (scenario.tearing.enabled && scenario.tearing.options.tip_min_edge_length_m > 0.0);
+  if (refines) mesh = triangulate_quads(mesh);
   build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
   if (scenario.cloth.grid && scenario.cloth.grid->pleats > 0) {
     place_particles(grid_initial_positions(*scenario.cloth.grid), lcc);

@@ -26,6 +26,9 @@ struct FrameStats {
   int self_contacts =
       0;  ///< pairs pushed apart or stopped by self-collision, over the frame's steps
   double collision_ms = 0.0;  ///< wall time of self-collision over the frame's steps (ms)
+  int tears = 0;              ///< edges torn (by strain or a cut) during the frame
+  int pieces = 0;             ///< connected pieces of cloth at the end of the frame
+  int boundary_edges = 0;     ///< edges with a face on one side only, tears included
 };
 
 /// Writes stats.csv: a header line, then one line per frame, flushed as it goes.

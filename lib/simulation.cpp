@@ -8,6 +8,7 @@
 #include "lib/cloth_setup.hpp"
 #include "lib/obstacle_mesh.hpp"
 #include "lib/render_frames.hpp"
+#include "lib/tear_step.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
 #include "topology/coarsen.hpp"
@@ -15,6 +16,7 @@
 #include "topology/current_mesh.hpp"
 #include "topology/face_strain.hpp"
 #include "topology/refine.hpp"
+#include "topology/tear.hpp"
 
 namespace tissu {
 namespace {
@@ -33,6 +35,7 @@ struct FrameSteps {
   int obstacle_contacts = 0;  ///< in the last step
   int self_contacts = 0;
   double collision_ms = 0.0;
+  int tears = 0;
 
   void add(StepStatus status, const StepWorkspace& workspace) {
     if (status == StepStatus::not_converged) ++unconverged;
@@ -62,6 +65,9 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.contacts = steps.obstacle_contacts;
   s.self_contacts = steps.self_contacts;
   s.collision_ms = steps.collision_ms;
+  s.tears = steps.tears;
+  s.pieces = count_pieces(lcc);
+  s.boundary_edges = count_boundary_edges(lcc);
   return s;
 }
 
@@ -140,6 +146,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
 
   RunResult result;
   StepWorkspace workspace;
+  TearStep tearing(scenario);
   for (int frame = 1; frame <= frame_count; ++frame) {
     State next = cloth.state;
     FrameSteps steps;
@@ -148,7 +155,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       const StepStatus status = step(cloth.model, scenario.solver, next, workspace);
       steps.add(status, workspace);
       if (status == StepStatus::non_finite) {
-        // the complex still holds the last good frame
+        // the complex still holds the last good state: the previous frame's, or that of the
+        // last step that tore the cloth in this frame
         const auto last_good =
             frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
         write_mesh(last_good, current_mesh(lcc), output.mesh_format);
@@ -163,6 +171,13 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
                          last_good.string();
         render_recorded(result);
         return result;
+      }
+      const int tears = tearing.after_step(lcc, cloth, next);
+      if (tears > 0) {
+        steps.tears += tears;
+        cloth = compile(lcc, next.time);
+        next = cloth.state;
+        workspace = StepWorkspace{};
       }
     }
     steps.wall_ms =

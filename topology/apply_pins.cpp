@@ -101,6 +101,8 @@ int apply_pins(ClothComplex& lcc, const std::vector<PinSelector>& selectors,
   for (std::size_t k = 0; k < selectors.size(); ++k) {
     for (Vertex_handle v : select(all, selectors[k], "pins[" + std::to_string(k) + "]")) {
       v->info().pinned = true;
+      v->info().velocity =
+          Vector3(selectors[k].velocity.x(), selectors[k].velocity.y(), selectors[k].velocity.z());
     }
   }
   return static_cast<int>(std::count_if(

@@ -7,7 +7,8 @@
 
 namespace tissu {
 
-/// Pins every particle chosen by one of `selectors` (their union) and returns how many are pinned.
+/// Pins every particle chosen by one of `selectors` (their union), gives it the selector's velocity
+/// (the last selector choosing it wins), and returns how many are pinned.
 /// A side is the set of vertices whose coordinate along the frame axis is within 1e-6 of the
 /// cloth's extent from the extreme; a corner is the end of the top or bottom side nearest to the
 /// left or right. Throws PinError ("pins[2]: ...") when a selector selects nothing or an index is

@@ -50,6 +50,9 @@ struct Particle {
   /// For a particle made by a split: the material coordinates of one end of the edge it split (the
   /// other end is symmetric about it), so that coarsening knows which edge to restore (m)
   Point3 split_edge_end = CGAL::ORIGIN;
+  /// An end of a torn edge: the crack's lips and tips are left alone by coarsening. Copied to
+  /// every particle a tear splits off it.
+  bool on_crack = false;
 };
 
 /// Rest data of a face.

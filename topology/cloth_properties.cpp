@@ -79,14 +79,20 @@ void assign_springs(ClothComplex& lcc, const SpringSettings& settings) {
 
 void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex) {
   double mass_kg = 0.0;
-  // in a combinatorial map the darts of a vertex are those starting at it, one per incident face
-  for (auto d = lcc.darts_of_cell<0>(vertex->dart()).begin();
-       d != lcc.darts_of_cell<0>(vertex->dart()).end(); ++d) {
-    if (lcc.vertex_attribute(d) != vertex) continue;
+  for (Dart_handle d : darts_leaving(lcc, vertex)) {
     const FaceRest& face = lcc.info<2>(d);
     mass_kg += face.areal_density * face.rest_area / lcc.darts_of_orbit<1>(d).size();
   }
   vertex->info().mass = mass_kg;
+}
+
+std::vector<Dart_handle> darts_leaving(ClothComplex& lcc, Vertex_handle vertex) {
+  std::vector<Dart_handle> out;
+  for (auto d = lcc.darts_of_cell<0>(vertex->dart()).begin();
+       d != lcc.darts_of_cell<0>(vertex->dart()).end(); ++d) {
+    if (lcc.vertex_attribute(d) == vertex) out.push_back(d);
+  }
+  return out;
 }
 
 double complex_total_mass(const ClothComplex& lcc) {

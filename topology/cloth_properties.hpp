@@ -3,6 +3,8 @@
 /// Rest areas, lumped masses and springs of a cloth complex, computed from material coordinates so
 /// that they do not depend on the current deformation.
 
+#include <vector>
+
 #include "topology/cloth_complex.hpp"
 #include "topology/spring_settings.hpp"
 
@@ -31,6 +33,9 @@ void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex);
 
 /// The vertex that follows the dart's edge in the dart's face (the apex for a triangle).
 Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart);
+
+/// The darts starting at `vertex`: one per incident face.
+std::vector<Dart_handle> darts_leaving(ClothComplex& lcc, Vertex_handle vertex);
 
 /// Sum of particle masses (kg).
 double complex_total_mass(const ClothComplex& lcc);

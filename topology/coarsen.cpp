@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "topology/cloth_properties.hpp"
 #include "topology/local_update.hpp"
 #include "topology/refine.hpp"
 #include "topology/validity.hpp"
@@ -20,15 +21,6 @@ struct Bisection {
   double parent_edge_m = 0.0;             ///< rest length of the edge (a, b) undoing restores
 };
 
-std::vector<Dart_handle> outgoing_darts(ClothComplex& lcc, Vertex_handle v) {
-  std::vector<Dart_handle> out;
-  for (auto d = lcc.darts_of_cell<0>(v->dart()).begin(); d != lcc.darts_of_cell<0>(v->dart()).end();
-       ++d) {
-    if (lcc.vertex_attribute(d) == v) out.push_back(d);
-  }
-  return out;
-}
-
 /// Whether (a, b) is the edge whose split made `m`: m is its midpoint and a or b is the end
 /// recorded at the split (the two diagonals of a grid cell share their midpoint).
 bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex_handle b) {
@@ -43,7 +35,7 @@ bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex
 
 /// The bisection that created `m`, if its neighbourhood is still exactly that.
 std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
-  const std::vector<Dart_handle> out = outgoing_darts(lcc, m);
+  const std::vector<Dart_handle> out = darts_leaving(lcc, m);
   // neighbours: the far end of each outgoing dart, plus, on the boundary, the origin of the dart
   // that ends at m without a twin
   std::vector<std::pair<Vertex_handle, Dart_handle>> neighbours;  // with the dart m -> it, if any
@@ -78,7 +70,7 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
 
 bool calm_around(ClothComplex& lcc, const Bisection& b, const RefinementOptions& o,
                  double hysteresis) {
-  for (Dart_handle d : outgoing_darts(lcc, b.middle)) {
+  for (Dart_handle d : darts_leaving(lcc, b.middle)) {
     for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
       if (o.strain_threshold > 0.0 && edge_strain(lcc, e) >= hysteresis * o.strain_threshold) {
         return false;
@@ -107,7 +99,7 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
   const Eigen::Vector3d momentum_before = momentum(with_middle);
 
   for (Dart_handle cut : b.cut_edges) lcc.remove_cell<1>(cut);
-  lcc.remove_cell<0>(outgoing_darts(lcc, b.middle).front());
+  lcc.remove_cell<0>(darts_leaving(lcc, b.middle).front());
   update_around_faces(lcc, b.corner_faces, settings);
 
   // hand the removed particle's momentum to the free corners, in proportion to their mass
@@ -129,7 +121,8 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
   CoarseningReport report;
   std::vector<Vertex_handle> created;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    if (v->info().source_index < 0 && !v->info().pinned) created.push_back(v);
+    const Particle& p = v->info();
+    if (p.source_index < 0 && !p.pinned && !p.on_crack) created.push_back(v);
   }
   // highest level first: whatever changed a particle's neighbourhood after its split is undone
   // before it (equal levels were never neighbours when made, so their order does not matter)

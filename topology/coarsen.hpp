@@ -13,7 +13,7 @@ struct CoarseningReport {
 };
 
 /// One coarsening pass, by decreasing Particle::level: every particle created by refinement
-/// (source_index -1), not pinned, whose
+/// (source_index -1), not pinned and not on a crack, whose
 /// neighbourhood is still that of one bisection (the two halves of its parent edge plus one or
 /// two cut edges), and around which every edge is below `hysteresis` x each threshold of
 /// `options` (a threshold of 0 does not hold coarsening back), is removed: its cut edges are

@@ -26,6 +26,8 @@ struct PinSelector {
   int every = 1;                ///< ... keeping every n-th one and always both ends
   std::vector<int> indices;     ///< kind == indices: input mesh (or grid) vertex ids
   Eigen::AlignedBox3d box;      ///< kind == box: material coordinates inside it (m)
+  /// Velocity the chosen particles keep (m/s): a handle moving at constant speed
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
 };
 
 /// Thrown when a selector selects nothing or names a vertex that does not exist; the message

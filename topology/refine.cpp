@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "topology/cloth_properties.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {
@@ -59,6 +60,19 @@ bool bisect_along_longest_edge_path(ClothComplex& lcc, Dart_handle edge, std::si
   return true;
 }
 
+/// Bisects each queued edge (given with its far end) along its longest-edge propagation path,
+/// skipping those an earlier path already bisected; returns the number of bisections.
+int bisect_queued(ClothComplex& lcc,
+                  const std::vector<std::pair<Dart_handle, Vertex_handle>>& queue,
+                  std::size_t particle_cap, const SpringSettings& settings) {
+  int splits = 0;
+  for (const auto& [edge, far_end] : queue) {
+    if (lcc.vertex_attribute(lcc.next(edge)) != far_end) continue;  // already bisected on a path
+    if (!bisect_along_longest_edge_path(lcc, edge, particle_cap, settings, splits)) break;
+  }
+  return splits;
+}
+
 bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
   return (o.max_edge_length_m > 0.0 && rest_length_m(lcc, d) > o.max_edge_length_m) ||
          (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
@@ -82,6 +96,20 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
   return std::acos(std::clamp(n1 * n2 / norms, -1.0, 1.0));
 }
 
+int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
+                         int max_particles, const SpringSettings& settings) {
+  std::vector<std::pair<Dart_handle, Vertex_handle>> to_split;
+  std::set<Dart_handle> queued;
+  for (Dart_handle d : darts_leaving(lcc, vertex)) {
+    const Dart_handle longest = longest_edge(lcc, d);
+    if (rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
+        queued.insert(edge_key(lcc, longest)).second) {
+      to_split.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
+    }
+  }
+  return bisect_queued(lcc, to_split, static_cast<std::size_t>(max_particles), settings);
+}
+
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
                         const SpringSettings& settings) {
   RefinementReport report;
@@ -102,11 +130,8 @@ RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
       }
     }
   }
-  const auto particle_cap = static_cast<std::size_t>(options.max_particles);
-  for (const auto& [edge, far_end] : to_split) {
-    if (lcc.vertex_attribute(lcc.next(edge)) != far_end) continue;  // already bisected on a path
-    if (!bisect_along_longest_edge_path(lcc, edge, particle_cap, settings, report.splits)) break;
-  }
+  report.splits =
+      bisect_queued(lcc, to_split, static_cast<std::size_t>(options.max_particles), settings);
   return report;
 }
 

@@ -23,4 +23,10 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle dart);
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
                         const SpringSettings& settings);
 
+/// Bisects, along its longest-edge propagation path, the longest edge of each triangle around
+/// `vertex` whose rest length is at least twice `min_edge_length_m`, until the cloth has
+/// `max_particles`: a finer fan there (e.g. at a crack tip). Returns the number of bisections.
+int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
+                         int max_particles, const SpringSettings& settings);
+
 }  // namespace tissu

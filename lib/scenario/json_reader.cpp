@@ -228,6 +228,24 @@ std::vector<double> JsonObjectReader::numbers(std::string_view key, std::size_t 
   return out;
 }
 
+std::vector<Eigen::Vector3d> JsonObjectReader::points(std::string_view key, std::size_t min_count) {
+  const std::string expected = "an array of at least " + std::to_string(min_count) +
+                               " points, each an array of 3 finite numbers [x, y, z]";
+  const nlohmann::json& value = get(key, expected);
+  if (!value.is_array() || value.size() < min_count) fail(key, expected);
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& point : value) {
+    if (!point.is_array() || point.size() != 3) fail(key, expected);
+    Eigen::Vector3d p;
+    for (int k = 0; k < 3; ++k) {
+      if (!point[k].is_number() || !std::isfinite(point[k].get<double>())) fail(key, expected);
+      p[k] = point[k].get<double>();
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
 void JsonObjectReader::finish() const {
   for (const auto& [key, value] : m_object.items()) {
     if (m_read.count(key)) continue;

@@ -53,6 +53,8 @@ class JsonObjectReader {
   /// Exactly `count` numbers, each obeying `rule`.
   std::vector<double> numbers(std::string_view key, std::size_t count, const NumberRule& rule);
 
+  /// An array of at least `min_count` points [x, y, z] of finite numbers (a polyline).
+  std::vector<Eigen::Vector3d> points(std::string_view key, std::size_t min_count);
   /// Rejects any key that was not read.
   void finish() const;
 

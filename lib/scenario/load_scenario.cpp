@@ -5,6 +5,7 @@
 #include "lib/scenario/read_cloth.hpp"
 #include "lib/scenario/read_collisions.hpp"
 #include "lib/scenario/read_render.hpp"
+#include "lib/scenario/read_tearing.hpp"
 #include "solver/step.hpp"
 
 namespace tissu {
@@ -174,6 +175,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
     s.solver.self_collision = read_self_collision(top.object("self_collision"));
   }
   if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"));
+  if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
   if (top.has("output")) read_output(top.object("output"), s.output);
   if (top.has("render")) s.render = read_render(top.object("render"));
   top.finish();

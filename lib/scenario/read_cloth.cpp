@@ -109,6 +109,7 @@ PinSelector read_pin(JsonObjectReader pin) {
       box.fail("max", "max >= min on every axis");
     box.finish();
   }
+  s.velocity = pin.vector3_or("velocity", s.velocity);
   pin.finish();
   return s;
 }

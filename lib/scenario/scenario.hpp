@@ -15,6 +15,7 @@
 #include "topology/pin_selection.hpp"
 #include "topology/refinement_options.hpp"
 #include "topology/spring_settings.hpp"
+#include "topology/tearing_options.hpp"
 
 namespace tissu {
 
@@ -51,6 +52,13 @@ struct AdaptiveSettings {
   double hysteresis = 0.5;
 };
 
+/// Tearing where the cloth is overstretched, and knife cuts at given times.
+struct TearingSettings {
+  bool enabled = false;
+  TearingOptions options;         ///< strain_threshold 0: only the cuts tear
+  std::vector<ScriptedCut> cuts;  ///< by increasing time
+};
+
 struct Scenario {
   std::string name;            ///< defaults to the file's stem
   std::filesystem::path file;  ///< the scenario file, for messages
@@ -64,6 +72,7 @@ struct Scenario {
   int substeps = 1;          ///< solver steps per frame
   int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default
   AdaptiveSettings adaptive;
+  TearingSettings tearing;
   OutputOptions output;
   RenderSettings render;
 };

@@ -267,6 +267,49 @@ TEST(Scenario, ReadsSelfCollision) {
               HasSubstr("did you mean 'thickness'?"));
 }
 
+TEST(Scenario, ReadsTearing) {
+  EXPECT_FALSE(parse_scenario(minimal, "s.json").tearing.enabled);
+  const Scenario s = parse_scenario(minimal, "s.json", {R"(tearing={
+      "strain": 0.2, "max_tears_per_step": 3, "tip_min_edge_length": 0.01,
+      "weak_regions": [ { "line": [[0, 0, 0.5], [1, 0, 0.5]], "width": 0.02, "factor": 0.5 },
+                        { "box": { "min": [0, 0, 0], "max": [0.1, 0.1, 0.1] }, "factor": 0.8 } ],
+      "cuts": [ { "time": 0.5, "line": [[0, 0, 0.2], [0.5, 0, 0.2]] } ] })"});
+  const TearingSettings& t = s.tearing;
+  EXPECT_TRUE(t.enabled);
+  EXPECT_DOUBLE_EQ(t.options.strain_threshold, 0.2);
+  EXPECT_EQ(t.options.max_tears_per_step, 3);
+  EXPECT_DOUBLE_EQ(t.options.tip_min_edge_length_m, 0.01);
+  ASSERT_EQ(t.options.weak_regions.size(), 2u);
+  EXPECT_EQ(t.options.weak_regions[0].kind, WeakRegion::Kind::line);
+  EXPECT_EQ(t.options.weak_regions[0].points_m.size(), 2u);
+  EXPECT_EQ(t.options.weak_regions[1].kind, WeakRegion::Kind::box);
+  EXPECT_DOUBLE_EQ(t.options.weak_regions[1].factor, 0.8);
+  ASSERT_EQ(t.cuts.size(), 1u);
+  EXPECT_DOUBLE_EQ(t.cuts[0].time_s, 0.5);
+
+  const Scenario pulled =
+      parse_scenario(minimal, "s.json", {R"(pins=[{ "side": "top", "velocity": [0, 0, 0.1] }])"});
+  EXPECT_EQ(pulled.pins.at(0).velocity, Eigen::Vector3d(0, 0, 0.1));
+}
+
+TEST(Scenario, BadTearingIsNamed) {
+  EXPECT_THAT(with("tearing", "{}"),
+              HasSubstr("tearing.strain: expected a positive \"strain\" or at least one of "
+                        "\"cuts\" when tearing"));
+  EXPECT_THAT(with("tearing", R"({ "strian": 0.2 })"), HasSubstr("did you mean 'strain'?"));
+  EXPECT_THAT(with("tearing", R"({ "strain": 0.2, "weak_regions": [{ "line": [[0, 0, 0]],
+                                  "width": 0.1, "factor": 0.5 }] })"),
+              HasSubstr("tearing.weak_regions[0].line: expected an array of at least 2 points"));
+  EXPECT_THAT(with("tearing", R"({ "strain": 0.2, "weak_regions": [{ "box": { "min": [0, 0, 0],
+                                  "max": [1, 1, 1] }, "factor": 0 }] })"),
+              HasSubstr("tearing.weak_regions[0].factor: expected a number in (0, 1], got 0"));
+  EXPECT_THAT(with("tearing", R"({ "cuts": [ { "time": 1, "line": [[0, 0, 0], [1, 0, 0]] },
+                                            { "time": 0.5, "line": [[0, 0, 0], [1, 0, 0]] } ] })"),
+              HasSubstr("tearing.cuts[1].time: expected a time not before the previous cut's"));
+  EXPECT_THAT(with("pins", R"([{ "side": "top", "velocity": [0, 1] }])"),
+              HasSubstr("pins[0].velocity: expected an array of 3 finite numbers"));
+}
+
 TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
   const IndexedMesh cube = test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);  // [-1, 1]^3
   const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle") / "cube.obj";

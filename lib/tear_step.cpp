@@ -1,0 +1,43 @@
+#include "lib/tear_step.hpp"
+
+#include <algorithm>
+
+#include "solver/spring_strain.hpp"
+#include "topology/tear.hpp"
+
+namespace tissu {
+
+TearStep::TearStep(const Scenario& scenario) : m_scenario(scenario) {
+  const TearingOptions& options = scenario.tearing.options;
+  double lowest_factor = 1.0;
+  for (const WeakRegion& region : options.weak_regions) {
+    lowest_factor = std::min(lowest_factor, region.factor);
+  }
+  m_lowest_tearing_strain = options.strain_threshold * lowest_factor;
+}
+
+int TearStep::after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state) {
+  const TearingSettings& tearing = m_scenario.tearing;
+  if (!tearing.enabled) return 0;
+  const bool cut_due =
+      m_next_cut < tearing.cuts.size() && state.time >= tearing.cuts[m_next_cut].time_s;
+  const bool overstretched =
+      m_lowest_tearing_strain > 0.0 &&
+      max_spring_strain(cloth.model, state.x, SpringKind::structural) > m_lowest_tearing_strain;
+  if (!cut_due && !overstretched) return 0;
+
+  write_back(cloth, state, lcc);
+  int tears = 0;
+  for (; m_next_cut < tearing.cuts.size() && state.time >= tearing.cuts[m_next_cut].time_s;
+       ++m_next_cut) {
+    tears += cut_along(lcc, tearing.cuts[m_next_cut].points_m, m_scenario.springs).tears;
+  }
+  if (overstretched) {
+    tears +=
+        tear(lcc, tearing.options, m_scenario.adaptive.refinement.max_particles, m_scenario.springs)
+            .tears;
+  }
+  return tears;
+}
+
+}  // namespace tissu

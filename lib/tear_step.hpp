@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// Tearing between two solver steps of a run. Includes CGAL: include it from lib/ sources only.
+
+#include <cstddef>
+
+#include "lib/scenario/scenario.hpp"
+#include "topology/compile.hpp"
+
+namespace tissu {
+
+/// Tears the cloth of a run after a step where it is overstretched, and cuts it when a scripted
+/// cut is due.
+class TearStep {
+ public:
+  explicit TearStep(const Scenario& scenario);
+
+  /// Looks at the stepped `state` of `cloth` (compiled from `lcc`). When a structural spring
+  /// exceeds the lowest tearing strain (a cheap test on the flat model) or a cut is due, writes
+  /// the state back into `lcc` and tears it (topology/tear.hpp). Returns the edges torn: when
+  /// there are any, `lcc` changed and must be recompiled.
+  int after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state);
+
+ private:
+  const Scenario& m_scenario;
+  double m_lowest_tearing_strain = 0.0;  ///< the threshold times the lowest weak factor
+  std::size_t m_next_cut = 0;            ///< index of the first cut not made yet
+};
+
+}  // namespace tissu
