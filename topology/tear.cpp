@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -11,6 +12,7 @@
 #include "topology/local_update.hpp"
 #include "topology/polyline.hpp"
 #include "topology/refine.hpp"
+#include "topology/validity.hpp"
 
 namespace tissu {
 namespace {
@@ -222,6 +224,7 @@ TearReport tear_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& 
     lcc.vertex_attribute(d)->info().on_crack = true;
   }
   update_around_faces(lcc, {dart, other}, settings);
+  assert(is_valid_cloth(lcc));
   TearReport report;
   report.tears = 1;
   report.new_particles = static_cast<int>(lcc.vertex_attributes().size() - particles_before);

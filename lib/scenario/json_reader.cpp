@@ -228,6 +228,15 @@ std::vector<double> JsonObjectReader::numbers(std::string_view key, std::size_t 
   return out;
 }
 
+Eigen::AlignedBox3d JsonObjectReader::box(std::string_view key) {
+  JsonObjectReader corners = object(key);
+  const Eigen::AlignedBox3d box(corners.vector3("min"), corners.vector3("max"));
+  if ((box.min().array() > box.max().array()).any())
+    corners.fail("max", "max >= min on every axis");
+  corners.finish();
+  return box;
+}
+
 std::vector<Eigen::Vector3d> JsonObjectReader::points(std::string_view key, std::size_t min_count) {
   const std::string expected = "an array of at least " + std::to_string(min_count) +
                                " points, each an array of 3 finite numbers [x, y, z]";

@@ -3,7 +3,7 @@
 /// Strict reading of one JSON object of a scenario: every key read is checked for type and range,
 /// and finish() rejects the keys nobody read, suggesting the nearest known one.
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -53,6 +53,8 @@ class JsonObjectReader {
   /// Exactly `count` numbers, each obeying `rule`.
   std::vector<double> numbers(std::string_view key, std::size_t count, const NumberRule& rule);
 
+  /// An object { "min": [x, y, z], "max": [x, y, z] } with max >= min on every axis.
+  Eigen::AlignedBox3d box(std::string_view key);
   /// An array of at least `min_count` points [x, y, z] of finite numbers (a polyline).
   std::vector<Eigen::Vector3d> points(std::string_view key, std::size_t min_count);
   /// Rejects any key that was not read.

@@ -103,11 +103,7 @@ PinSelector read_pin(JsonObjectReader pin) {
     s.indices = pin.integers("indices", 0);
   } else {
     s.kind = PinSelector::Kind::box;
-    JsonObjectReader box = pin.object("box");
-    s.box = Eigen::AlignedBox3d(box.vector3("min"), box.vector3("max"));
-    if ((s.box.min().array() > s.box.max().array()).any())
-      box.fail("max", "max >= min on every axis");
-    box.finish();
+    s.box = pin.box("box");
   }
   s.velocity = pin.vector3_or("velocity", s.velocity);
   pin.finish();

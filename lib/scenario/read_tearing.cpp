@@ -16,11 +16,7 @@ WeakRegion read_weak_region(JsonObjectReader o) {
     region.width_m = o.number("width", positive(" (m)"));
   } else {
     region.kind = WeakRegion::Kind::box;
-    JsonObjectReader box = o.object("box");
-    region.box = Eigen::AlignedBox3d(box.vector3("min"), box.vector3("max"));
-    if ((region.box.min().array() > region.box.max().array()).any())
-      box.fail("max", "max >= min on every axis");
-    box.finish();
+    region.box = o.box("box");
   }
   region.factor = o.number("factor", weakening_factor);
   o.finish();

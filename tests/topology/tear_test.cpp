@@ -238,6 +238,36 @@ TEST_P(CrackTipTest, CrackTipsAreRefinedAndCrackLipsAreNotCoarsened) {
   expect_valid_and_mass_conserved();
 }
 
+TEST_P(CrackTipTest, TheCrackRunsAcrossTheStretchNotAlongTheGridLines) {
+  // backward diagonals run along (1, -1); stretch the sheet by 40 % along (1, 1) / sqrt 2
+  options.diagonal = DiagonalPattern::backward;
+  lcc.clear();
+  build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
+  const Eigen::Vector3d along = Eigen::Vector3d(1, 0, 1).normalized();
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Eigen::Vector3d x(v->point().x(), v->point().y(), v->point().z());
+    const Eigen::Vector3d stretched = x + 0.4 * x.dot(along) * along;
+    v->point() = Point3(stretched.x(), stretched.y(), stretched.z());
+  }
+  TearingOptions tearing;
+  tearing.strain_threshold = 0.2;  // grid lines stretch by 21.7 %, the diagonals not at all
+  tearing.max_tears_per_step = 6;
+  EXPECT_EQ(tear(lcc, tearing, 100000, springs).tears, 6);
+  expect_valid_and_mass_conserved();
+  int torn = 0;
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    if (!lcc.is_free<2>(d) || !lcc.vertex_attribute(d)->info().on_crack) continue;
+    const Point3& a = lcc.vertex_attribute(d)->info().rest_position;
+    const Point3& b = lcc.vertex_attribute(lcc.next(d))->info().rest_position;
+    const Eigen::Vector3d edge(b.x() - a.x(), 0.0, b.z() - a.z());
+    if (a.x() == b.x() && (a.x() == 0.0 || a.x() == 1.0)) continue;  // the sheet's own sides
+    if (a.z() == b.z() && (a.z() == 0.0 || a.z() == 1.0)) continue;
+    ++torn;
+    EXPECT_NEAR(std::abs(edge.normalized().dot(along)), 0.0, 1e-9) << "torn edge not across";
+  }
+  EXPECT_EQ(torn, 2 * 6);  // both lips of each torn edge
+}
+
 INSTANTIATE_TEST_SUITE_P(Triangles, CrackTipTest, ::testing::Values(GridCells::triangles));
 
 }  // namespace
