@@ -20,9 +20,10 @@ struct FrameStats {
   double potential_energy = 0.0;  ///< elastic + gravitational (J)
   double step_ms = 0.0;           ///< wall time of the frame's solver steps (ms)
   int unconverged_steps = 0;      ///< implicit steps whose linear solve missed its tolerance
-  int splits = 0;                 ///< edges bisected by adaptive refinement after this frame
-  int merges = 0;                 ///< bisections undone by adaptive coarsening after this frame
-  int contacts = 0;               ///< particle-obstacle contacts resolved in the frame's last step
+  int splits = 0;    ///< edges bisected by adaptive refinement after this frame, and around crack
+                     ///< tips during it
+  int merges = 0;    ///< bisections undone by adaptive coarsening after this frame
+  int contacts = 0;  ///< particle-obstacle contacts resolved in the frame's last step
   int self_contacts =
       0;  ///< pairs pushed apart or stopped by self-collision, over the frame's steps
   double collision_ms = 0.0;  ///< wall time of self-collision over the frame's steps (ms)

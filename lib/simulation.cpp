@@ -36,6 +36,7 @@ struct FrameSteps {
   int self_contacts = 0;
   double collision_ms = 0.0;
   int tears = 0;
+  int tip_splits = 0;  ///< edges bisected around crack tips
 
   void add(StepStatus status, const StepWorkspace& workspace) {
     if (status == StepStatus::not_converged) ++unconverged;
@@ -130,7 +131,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
 
   auto record = [&](int frame, const FrameSteps& steps, Adaptation changes) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
-    row.splits = changes.splits;
+    row.splits = changes.splits + steps.tip_splits;
     row.merges = changes.merges;
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
@@ -172,9 +173,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
         render_recorded(result);
         return result;
       }
-      const int tears = tearing.after_step(lcc, cloth, next);
-      if (tears > 0) {
-        steps.tears += tears;
+      const TearReport torn = tearing.after_step(lcc, cloth, next);
+      if (torn.tears > 0) {
+        steps.tears += torn.tears;
+        steps.tip_splits += torn.tip_refinements;
         cloth = compile(lcc, next.time);
         next = cloth.state;
         workspace = StepWorkspace{};

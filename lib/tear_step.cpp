@@ -16,28 +16,29 @@ TearStep::TearStep(const Scenario& scenario) : m_scenario(scenario) {
   m_lowest_tearing_strain = options.strain_threshold * lowest_factor;
 }
 
-int TearStep::after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state) {
+TearReport TearStep::after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state) {
   const TearingSettings& tearing = m_scenario.tearing;
-  if (!tearing.enabled) return 0;
+  if (!tearing.enabled) return {};
   const bool cut_due =
       m_next_cut < tearing.cuts.size() && state.time >= tearing.cuts[m_next_cut].time_s;
   const bool overstretched =
       m_lowest_tearing_strain > 0.0 &&
       max_spring_strain(cloth.model, state.x, SpringKind::structural) > m_lowest_tearing_strain;
-  if (!cut_due && !overstretched) return 0;
+  if (!cut_due && !overstretched) return {};
 
   write_back(cloth, state, lcc);
-  int tears = 0;
+  TearReport report;
   for (; m_next_cut < tearing.cuts.size() && state.time >= tearing.cuts[m_next_cut].time_s;
        ++m_next_cut) {
-    tears += cut_along(lcc, tearing.cuts[m_next_cut].points_m, m_scenario.springs).tears;
+    report.tears += cut_along(lcc, tearing.cuts[m_next_cut].points_m, m_scenario.springs).tears;
   }
   if (overstretched) {
-    tears +=
-        tear(lcc, tearing.options, m_scenario.adaptive.refinement.max_particles, m_scenario.springs)
-            .tears;
+    const TearReport torn = tear(lcc, tearing.options, m_scenario.adaptive.refinement.max_particles,
+                                 m_scenario.springs);
+    report.tears += torn.tears;
+    report.tip_refinements += torn.tip_refinements;
   }
-  return tears;
+  return report;
 }
 
 }  // namespace tissu

@@ -6,6 +6,7 @@
 
 #include "lib/scenario/scenario.hpp"
 #include "topology/compile.hpp"
+#include "topology/tearing_options.hpp"
 
 namespace tissu {
 
@@ -17,9 +18,9 @@ class TearStep {
 
   /// Looks at the stepped `state` of `cloth` (compiled from `lcc`). When a structural spring
   /// exceeds the lowest tearing strain (a cheap test on the flat model) or a cut is due, writes
-  /// the state back into `lcc` and tears it (topology/tear.hpp). Returns the edges torn: when
-  /// there are any, `lcc` changed and must be recompiled.
-  int after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state);
+  /// the state back into `lcc` and tears it (topology/tear.hpp). When edges were torn, `lcc`
+  /// changed and must be recompiled.
+  TearReport after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state);
 
  private:
   const Scenario& m_scenario;

@@ -84,9 +84,11 @@ bool calm_around(ClothComplex& lcc, const Bisection& b, const RefinementOptions&
   return true;
 }
 
-Eigen::Vector3d momentum(const std::vector<Vertex_handle>& vertices) {
+/// Linear momentum of the unpinned particles among `vertices` (kg m/s).
+Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (Vertex_handle v : vertices) {
+    if (v->info().pinned) continue;
     const Vector3& vel = v->info().velocity;
     p += v->info().mass * Eigen::Vector3d(vel.x(), vel.y(), vel.z());
   }
@@ -96,17 +98,18 @@ Eigen::Vector3d momentum(const std::vector<Vertex_handle>& vertices) {
 void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
   std::vector<Vertex_handle> with_middle = b.patch;
   with_middle.push_back(b.middle);
-  const Eigen::Vector3d momentum_before = momentum(with_middle);
+  const Eigen::Vector3d momentum_before = free_momentum(with_middle);
 
   for (Dart_handle cut : b.cut_edges) lcc.remove_cell<1>(cut);
   lcc.remove_cell<0>(darts_leaving(lcc, b.middle).front());
   update_around_faces(lcc, b.corner_faces, settings);
 
-  // hand the removed particle's momentum to the free corners, in proportion to their mass
+  // hand the removed particle's momentum to the free corners, in proportion to their mass (a
+  // pinned particle's momentum is the clamp's)
   double free_mass_kg = 0.0;
   for (Vertex_handle v : b.patch) free_mass_kg += v->info().pinned ? 0.0 : v->info().mass;
   if (free_mass_kg > 0.0) {
-    const Eigen::Vector3d dv = (momentum_before - momentum(b.patch)) / free_mass_kg;
+    const Eigen::Vector3d dv = (momentum_before - free_momentum(b.patch)) / free_mass_kg;
     for (Vertex_handle v : b.patch) {
       if (!v->info().pinned)
         v->info().velocity = v->info().velocity + Vector3(dv.x(), dv.y(), dv.z());
@@ -122,7 +125,7 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
   std::vector<Vertex_handle> created;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     const Particle& p = v->info();
-    if (p.source_index < 0 && !p.pinned && !p.on_crack) created.push_back(v);
+    if (p.source_index < 0 && !p.on_crack) created.push_back(v);
   }
   // highest level first: whatever changed a particle's neighbourhood after its split is undone
   // before it (equal levels were never neighbours when made, so their order does not matter)

@@ -13,15 +13,16 @@ struct CoarseningReport {
 };
 
 /// One coarsening pass, by decreasing Particle::level: every particle created by refinement
-/// (source_index -1), not pinned and not on a crack, whose
+/// (source_index -1; a midpoint pinned because its edge was clamped too) and not on a crack, whose
 /// neighbourhood is still that of one bisection (the two halves of its parent edge plus one or
 /// two cut edges), and around which every edge is below `hysteresis` x each threshold of
 /// `options` (a threshold of 0 does not hold coarsening back), is removed: its cut edges are
 /// deleted (remove_cell<1>), then the vertex (remove_cell<0>), restoring the parent triangles.
 /// Particles of the input mesh are never removed. Rest areas, masses and springs are recomputed
 /// around each change; the removed particle's momentum is handed to the free corners so that the
-/// total linear momentum is unchanged (the centre of mass moves by at most the particle's mass
-/// times its distance to the parent edge's midpoint, which is zero while the cloth is unbent).
+/// linear momentum of the free particles is unchanged (the centre of mass moves by at most the
+/// particle's mass times its distance to the parent edge's midpoint, which is zero while the cloth
+/// is unbent).
 CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
                          const SpringSettings& settings);
 

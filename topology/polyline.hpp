@@ -18,6 +18,10 @@ struct PolylineProjection {
 PolylineProjection project_on_polyline(const std::vector<Eigen::Vector3d>& points,
                                        const Eigen::Vector3d& p);
 
+/// Distance between the polyline through `points` (at least two) and the segment [a, b] (m).
+double polyline_segment_distance(const std::vector<Eigen::Vector3d>& points,
+                                 const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 /// Total length of the polyline (m).
 double polyline_length(const std::vector<Eigen::Vector3d>& points);
 

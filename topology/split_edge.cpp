@@ -33,6 +33,8 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   middle.velocity = 0.5 * (pa.velocity + pb.velocity);
   middle.rest_position = CGAL::midpoint(pa.rest_position, pb.rest_position);
   middle.split_edge_end = pa.rest_position;
+  // an edge held at both ends (a clamp) stays held along its length
+  middle.pinned = pa.pinned && pb.pinned;
 
   // dart: a -> m afterwards, next(dart): m -> b; across, opposite<2>(dart): m -> a
   const Vertex_handle m =

@@ -31,16 +31,20 @@ void add(TearReport& total, const TearReport& more) {
   total.tip_refinements += more.tip_refinements;
 }
 
-bool inside(const WeakRegion& region, const Eigen::Vector3d& p_m) {
-  if (region.kind == WeakRegion::Kind::box) return region.box.contains(p_m);
-  return project_on_polyline(region.points_m, p_m).distance_m <= 0.5 * region.width_m;
+/// Whether the region holds the edge from rest position a to b: its midpoint lies in the box, or
+/// it passes within half the width of the line (so the edges crossing a perforation line are
+/// weakened at any resolution).
+bool holds(const WeakRegion& region, const Eigen::Vector3d& a_m, const Eigen::Vector3d& b_m) {
+  if (region.kind == WeakRegion::Kind::box) return region.box.contains(0.5 * (a_m + b_m));
+  return polyline_segment_distance(region.points_m, a_m, b_m) <= 0.5 * region.width_m;
 }
 
-/// The strain at which an edge whose rest midpoint is `midpoint_m` tears (dimensionless).
-double tearing_strain_at(const TearingOptions& o, const Eigen::Vector3d& midpoint_m) {
+/// The strain at which the edge from rest position a to b tears (dimensionless).
+double tearing_strain_of(const TearingOptions& o, const Eigen::Vector3d& a_m,
+                         const Eigen::Vector3d& b_m) {
   double factor = 1.0;
   for (const WeakRegion& region : o.weak_regions) {
-    if (inside(region, midpoint_m)) factor = std::min(factor, region.factor);
+    if (holds(region, a_m, b_m)) factor = std::min(factor, region.factor);
   }
   return o.strain_threshold * factor;
 }
@@ -150,8 +154,7 @@ std::vector<Overstretched> overstretched_edges(ClothComplex& lcc, const TearingO
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     const Vertex_handle a = lcc.vertex_attribute(d);
     const Vertex_handle b = lcc.vertex_attribute(lcc.next(d));
-    const double ratio =
-        edge_stretch(lcc, d) / tearing_strain_at(options, 0.5 * (rest_of(a) + rest_of(b)));
+    const double ratio = edge_stretch(lcc, d) / tearing_strain_of(options, rest_of(a), rest_of(b));
     if (ratio > 1.0) edges.push_back({ratio, a, b});
   }
   std::stable_sort(edges.begin(), edges.end(), [](const Overstretched& x, const Overstretched& y) {
@@ -243,6 +246,7 @@ TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_partic
     const Vertex_handle v = breaking_end(lcc, overstretched);
     for (Dart_handle edge : crack_edges(lcc, v)) {
       if (report.tears >= options.max_tears_per_step) break;
+      if (frees_a_face(lcc, edge)) continue;  // the first edge of a fracture may have changed that
       const Vertex_handle far_end = lcc.vertex_attribute(lcc.next(edge));
       touched.insert(v);
       touched.insert(far_end);

@@ -33,7 +33,8 @@ TearReport tear_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& 
 /// other side, so that it splits. An edge whose tear would leave a face attached to nothing is
 /// never chosen (no loose triangles). At most max_tears_per_step edges are torn: the solver relaxes
 /// the cloth between passes, which moves the largest strain to the crack's tip. Crack tips (the
-/// far ends of torn edges) are then refined when tip_min_edge_length_m > 0, up to `max_particles`.
+/// far ends of torn edges) are then refined when tip_min_edge_length_m > 0, up to `max_particles`
+/// (triangle cloths only, as for refine()).
 TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_particles,
                 const SpringSettings& settings);
 

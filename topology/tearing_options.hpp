@@ -13,8 +13,8 @@ struct WeakRegion {
   enum class Kind { line, box };
   Kind kind = Kind::line;
   std::vector<Eigen::Vector3d> points_m;  ///< kind == line: the polyline's vertices (m), >= 2
-  double width_m = 0.0;                   ///< kind == line: edges whose midpoint lies within
-                                          ///< width / 2 of the polyline are weakened (m)
+  double width_m = 0.0;                   ///< kind == line: edges passing within width / 2 of
+                                          ///< the polyline (crossing it, say) are weakened (m)
   Eigen::AlignedBox3d box;                ///< kind == box: edges whose midpoint lies inside (m)
   double factor = 1.0;  ///< the tearing strain is multiplied by this there, in (0, 1]
 };

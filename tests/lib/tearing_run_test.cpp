@@ -100,6 +100,24 @@ TEST(TearingRun, AStripWithoutAWeakLineStillTearsIntoTwoPieces) {
   expect_mass_constant(r.frames);
 }
 
+TEST(TearingRun, TearingWorksWithAdaptiveRefinementAndRefinedCrackTips) {
+  std::string scenario = pulled_strip(R"({ "strain": 0.15, "tip_min_edge_length": 0.01 })");
+  scenario.insert(
+      scenario.rfind('}'),
+      R"(, "adaptive": { "strain": 0.08, "min_edge_length": 0.01, "max_particles": 3000 })");
+  const TearingRun r = run(scenario, "adaptive_strip");
+  ASSERT_TRUE(r.result.ok) << r.result.failure;
+  EXPECT_EQ(r.frames.back().pieces, 2);
+  int splits = 0, merges = 0;
+  for (const FrameStats& f : r.frames) {
+    splits += f.splits;
+    merges += f.merges;
+  }
+  EXPECT_GT(splits, 0);
+  EXPECT_GT(r.frames.back().particles, r.frames.front().particles);
+  expect_mass_constant(r.frames);
+}
+
 TEST(TearingRun, BelowTheThresholdTheStripNeverTears) {
   const TearingRun r = run(pulled_strip(R"({ "strain": 2.0 })"), "strong_strip");
   ASSERT_TRUE(r.result.ok) << r.result.failure;

@@ -81,9 +81,18 @@ TEST_F(SplitEdgeTest, EverySplitOfARandomBatchKeepsTheInvariantsAndThePins) {
   }
   int still_pinned = 0;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    still_pinned += v->info().pinned;
+    still_pinned += v->info().pinned && v->info().source_index >= 0;
   }
   EXPECT_EQ(still_pinned, pinned);
+}
+
+TEST_F(SplitEdgeTest, TheMidpointOfAClampedEdgeIsPinnedAndOfAnyOtherIsFree) {
+  // the top row (pinned) has source ids 35 to 41, right to left along the border; 28 is below 35
+  const Dart_handle on_clamp = split_edge(lcc, dart_between(36, 35), springs);
+  EXPECT_TRUE(lcc.vertex_attribute(on_clamp)->info().pinned);
+  const Dart_handle off_clamp = split_edge(lcc, dart_between(35, 28), springs);
+  EXPECT_FALSE(lcc.vertex_attribute(off_clamp)->info().pinned);
+  expect_invariants("after splitting a clamped edge");
 }
 
 TEST_F(SplitEdgeTest, ClothAtRestInItsRestShapeStaysAtRest) {
