@@ -85,22 +85,36 @@ Eigen::Vector3d largest_stretch_direction(ClothComplex& lcc, Vertex_handle v) {
   return eigen.eigenvectors().col(2);  // eigenvalues ascend
 }
 
-/// Whether tearing the dart's edge would leave one of its two faces joined to nothing: such
-/// single loose faces are what tearing must not shed.
-bool frees_a_face(ClothComplex& lcc, Dart_handle d) {
-  for (Dart_handle face : {d, lcc.opposite<2>(d)}) {
-    int sewn = 0;
-    for (auto e = lcc.darts_of_orbit<1>(face).begin(); e != lcc.darts_of_orbit<1>(face).end(); ++e)
-      sewn += !lcc.is_free<2>(e);
-    if (sewn <= 1) return true;
+/// Whether tearing the dart's edge would cut off a piece of fewer than `min_faces` faces: a
+/// search from each side over faces joined by sewn edges (the torn one excluded) that stops at
+/// `min_faces` faces or on reaching the other side.
+bool sheds_a_fragment(ClothComplex& lcc, Dart_handle d, int min_faces) {
+  const Dart_handle other = lcc.opposite<2>(d);
+  for (Dart_handle start : {d, other}) {
+    const Face_handle goal = lcc.attribute<2>(start == d ? other : d);
+    std::set<Face_handle> seen{lcc.attribute<2>(start)};
+    std::vector<Dart_handle> frontier{start};
+    bool joined = false;
+    while (!frontier.empty() && !joined && static_cast<int>(seen.size()) < min_faces) {
+      const Dart_handle face = frontier.back();
+      frontier.pop_back();
+      for (auto e = lcc.darts_of_orbit<1>(face).begin(); e != lcc.darts_of_orbit<1>(face).end();
+           ++e) {
+        if (lcc.is_free<2>(e) || e == d || e == other) continue;
+        const Dart_handle across = lcc.opposite<2>(e);
+        if (lcc.attribute<2>(across) == goal) joined = true;
+        if (seen.insert(lcc.attribute<2>(across)).second) frontier.push_back(across);
+      }
+    }
+    if (!joined && static_cast<int>(seen.size()) < min_faces) return true;
   }
   return false;
 }
 
 /// The edges a fracture at `v` tears: the interior edge most perpendicular (in rest space) to the
 /// largest stretch, and for a closed fan also the best one on the other side of the stretch line;
-/// never one that would free a face.
-std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v) {
+/// never one that would cut off a piece of fewer than `min_piece_faces` faces.
+std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min_piece_faces) {
   const Eigen::Vector3d stretch = largest_stretch_direction(lcc, v);
   struct Candidate {
     Dart_handle dart;
@@ -109,7 +123,7 @@ std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v) {
   };
   std::vector<Candidate> candidates;
   for (Dart_handle d : darts_leaving(lcc, v)) {
-    if (lcc.is_free<2>(d) || frees_a_face(lcc, d)) continue;
+    if (lcc.is_free<2>(d) || sheds_a_fragment(lcc, d, min_piece_faces)) continue;
     const Eigen::Vector3d u =
         (rest_of(lcc.vertex_attribute(lcc.next(d))) - rest_of(v)).normalized();
     candidates.push_back({d, u, std::abs(u.dot(stretch))});
@@ -244,9 +258,10 @@ TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_partic
     if (report.tears >= options.max_tears_per_step) break;
     if (touched.count(overstretched.a) || touched.count(overstretched.b)) continue;
     const Vertex_handle v = breaking_end(lcc, overstretched);
-    for (Dart_handle edge : crack_edges(lcc, v)) {
+    for (Dart_handle edge : crack_edges(lcc, v, options.min_piece_faces)) {
       if (report.tears >= options.max_tears_per_step) break;
-      if (frees_a_face(lcc, edge)) continue;  // the first edge of a fracture may have changed that
+      // the fracture's first edge may have changed that
+      if (sheds_a_fragment(lcc, edge, options.min_piece_faces)) continue;
       const Vertex_handle far_end = lcc.vertex_attribute(lcc.next(edge));
       touched.insert(v);
       touched.insert(far_end);

@@ -30,11 +30,11 @@ TearReport tear_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& 
 /// direction of largest stretch there, the top eigenvector of the area-weighted mean right
 /// Cauchy-Green tensor C = F^T F of its corner triangles. It tears the edge most perpendicular to
 /// that direction; a vertex inside the cloth (whose fan is closed) also tears the best edge on the
-/// other side, so that it splits. An edge whose tear would leave a face attached to nothing is
-/// never chosen (no loose triangles). At most max_tears_per_step edges are torn: the solver relaxes
-/// the cloth between passes, which moves the largest strain to the crack's tip. Crack tips (the
-/// far ends of torn edges) are then refined when tip_min_edge_length_m > 0, up to `max_particles`
-/// (triangle cloths only, as for refine()).
+/// other side, so that it splits. An edge whose tear would cut off a piece of fewer than
+/// min_piece_faces faces is never chosen (no loose triangles or shreds). At most max_tears_per_step
+/// edges are torn: the solver relaxes the cloth between passes, which moves the largest strain to
+/// the crack's tip. Crack tips (the far ends of torn edges) are then refined when
+/// tip_min_edge_length_m > 0, up to `max_particles` (triangle cloths only, as for refine()).
 TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_particles,
                 const SpringSettings& settings);
 

@@ -27,6 +27,9 @@ struct TearingOptions {
   /// Edges unsewn per pass at most (ARCSim's max_cracks). Small values let the solver relax the
   /// cloth between tears, so that a crack grows from its tip instead of starting beside it.
   int max_tears_per_step = 1;
+  /// A tear that would cut off a piece of fewer faces is not made: no loose triangles or small
+  /// shreds (1 allows any piece). Scripted cuts are not limited.
+  int min_piece_faces = 8;
   /// Around each crack tip, bisect edges of at least twice this rest length (m), so that the crack
   /// can turn off the initial grid's lines; 0 does not refine.
   double tip_min_edge_length_m = 0.0;

@@ -43,6 +43,8 @@ TearingSettings read_tearing(JsonObjectReader tearing) {
   o.strain_threshold = tearing.number_or("strain", 0.0, non_negative(""));
   o.max_tears_per_step = tearing.integer_or("max_tears_per_step", o.max_tears_per_step, 1,
                                             std::numeric_limits<int>::max());
+  o.min_piece_faces =
+      tearing.integer_or("min_piece_faces", o.min_piece_faces, 1, std::numeric_limits<int>::max());
   o.tip_min_edge_length_m =
       tearing.number_or("tip_min_edge_length", o.tip_min_edge_length_m, non_negative(" (m)"));
   if (tearing.has("weak_regions")) {

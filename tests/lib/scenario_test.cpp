@@ -270,7 +270,7 @@ TEST(Scenario, ReadsSelfCollision) {
 TEST(Scenario, ReadsTearing) {
   EXPECT_FALSE(parse_scenario(minimal, "s.json").tearing.enabled);
   const Scenario s = parse_scenario(minimal, "s.json", {R"(tearing={
-      "strain": 0.2, "max_tears_per_step": 3, "tip_min_edge_length": 0.01,
+      "strain": 0.2, "max_tears_per_step": 3, "tip_min_edge_length": 0.01, "min_piece_faces": 2,
       "weak_regions": [ { "line": [[0, 0, 0.5], [1, 0, 0.5]], "width": 0.02, "factor": 0.5 },
                         { "box": { "min": [0, 0, 0], "max": [0.1, 0.1, 0.1] }, "factor": 0.8 } ],
       "cuts": [ { "time": 0.5, "line": [[0, 0, 0.2], [0.5, 0, 0.2]] } ] })"});
@@ -279,6 +279,7 @@ TEST(Scenario, ReadsTearing) {
   EXPECT_DOUBLE_EQ(t.options.strain_threshold, 0.2);
   EXPECT_EQ(t.options.max_tears_per_step, 3);
   EXPECT_DOUBLE_EQ(t.options.tip_min_edge_length_m, 0.01);
+  EXPECT_EQ(t.options.min_piece_faces, 2);
   ASSERT_EQ(t.options.weak_regions.size(), 2u);
   EXPECT_EQ(t.options.weak_regions[0].kind, WeakRegion::Kind::line);
   EXPECT_EQ(t.options.weak_regions[0].points_m.size(), 2u);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -194,6 +195,38 @@ TEST_P(TearTest, AStretchedSheetTearsAcrossTheStretchAtItsWeakLine) {
     EXPECT_NEAR(a.z(), b.z(), 1e-9) << "torn edge not across the stretch";
     EXPECT_NEAR(a.z(), 0.45, 0.05 + 1e-9) << "torn edge away from the weak line";
   }
+}
+
+/// The number of compiled triangles of the smallest piece of cloth.
+int smallest_piece_triangles(ClothComplex& lcc) {
+  const CompiledCloth cloth = compile(lcc);
+  const std::vector<int> piece = piece_of_particles(cloth.model);
+  std::map<int, int> triangles;
+  for (int t = 0; t < cloth.model.triangles.rows(); ++t)
+    ++triangles[piece[cloth.model.triangles(t, 0)]];
+  int smallest = std::numeric_limits<int>::max();
+  for (const auto& [root, count] : triangles) smallest = std::min(smallest, count);
+  return smallest;
+}
+
+TEST_P(TearTest, TearingShedsNoPieceSmallerThanAsked) {
+  auto shred = [&](int min_piece_faces) {
+    lcc.clear();
+    build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
+    for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+      const Point3& p = v->point();
+      v->point() = Point3(1.6 * p.x(), p.y(), 1.6 * p.z());  // stretched 60 % both ways
+    }
+    TearingOptions tearing;
+    tearing.strain_threshold = 0.2;
+    tearing.max_tears_per_step = 1000;
+    tearing.min_piece_faces = min_piece_faces;
+    for (int pass = 0; pass < 10; ++pass) tear(lcc, tearing, 100000, springs);
+    expect_valid_and_mass_conserved();
+    return smallest_piece_triangles(lcc);
+  };
+  EXPECT_LT(shred(1), 8);  // shreds without the guard
+  EXPECT_GE(shred(8), 8);
 }
 
 TEST_P(TearTest, TheTearCountPerPassIsCapped) {
