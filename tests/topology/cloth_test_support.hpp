@@ -1,10 +1,25 @@
 #pragma once
 // Grids and meshes shared by the topology tests.
 
+#include <gtest/gtest.h>
+
+#include <string>
+
 #include "topology/build_cloth_complex.hpp"
+#include "topology/cloth_properties.hpp"
 #include "topology/grid_mesh.hpp"
+#include "topology/validity.hpp"
 
 namespace tissu::test {
+
+/// Every invariant of validity_problems() holds and the particles weigh `expected_kg` to 1e-12
+/// relative; `when` names the moment in failure messages.
+inline void expect_valid_with_mass(const ClothComplex& lcc, double expected_kg,
+                                   const std::string& when = "") {
+  const std::vector<std::string> problems = validity_problems(lcc);
+  EXPECT_TRUE(problems.empty()) << when << ": " << problems.front();
+  EXPECT_NEAR(complex_total_mass(lcc), expected_kg, 1e-12 * expected_kg) << when;
+}
 
 inline SpringSettings all_springs() {
   SpringSettings s;

@@ -20,10 +20,7 @@ class RefineTest : public ::testing::Test {
     build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
   }
   void expect_valid_and_mass_conserved() {
-    const auto problems = validity_problems(lcc);
-    EXPECT_TRUE(problems.empty()) << problems.front();
-    const double expected_kg = density_kg_per_m2 * options.width * options.height;
-    EXPECT_NEAR(complex_total_mass(lcc), expected_kg, 1e-12 * expected_kg);
+    test::expect_valid_with_mass(lcc, density_kg_per_m2 * options.width * options.height);
   }
   /// Stretches the cloth by `factor` along x for rest x beyond `from_x_m`.
   void stretch_right_part(double from_x_m, double factor) {

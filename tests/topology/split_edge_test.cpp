@@ -29,9 +29,7 @@ class SplitEdgeTest : public ::testing::Test {
   double expected_mass_kg() const { return density_kg_per_m2 * options.width * options.height; }
 
   void expect_invariants(const std::string& when) {
-    const std::vector<std::string> problems = validity_problems(lcc);
-    EXPECT_TRUE(problems.empty()) << when << ": " << problems.front();
-    EXPECT_NEAR(complex_total_mass(lcc), expected_mass_kg(), 1e-12 * expected_mass_kg()) << when;
+    test::expect_valid_with_mass(lcc, expected_mass_kg(), when);
   }
 
   /// Some dart of the edge whose vertices have source ids a and b, in either direction.

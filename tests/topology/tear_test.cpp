@@ -28,10 +28,7 @@ class TearTest : public ::testing::TestWithParam<GridCells> {
   }
 
   void expect_valid_and_mass_conserved() {
-    const auto problems = validity_problems(lcc);
-    EXPECT_TRUE(problems.empty()) << problems.front();
-    const double expected_kg = density_kg_per_m2 * options.width * options.height;
-    EXPECT_NEAR(complex_total_mass(lcc), expected_kg, 1e-12 * expected_kg);
+    test::expect_valid_with_mass(lcc, density_kg_per_m2 * options.width * options.height);
     EXPECT_NO_THROW(compile(lcc));  // every particle on a face, every spring well formed
   }
 
