@@ -124,7 +124,7 @@ void sweep_arguments(benchmark::internal::Benchmark* b) {
   for (const PdGlobalSolver solver :
        {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
         PdGlobalSolver::colored_gauss_seidel}) {
-    for (int side : {128, 256, 512}) {
+    for (int side : {128, 256, 512, 1024}) {
       for (int threads : {1, 2}) b->Args({static_cast<int>(solver), side, threads});
     }
   }
@@ -132,7 +132,7 @@ void sweep_arguments(benchmark::internal::Benchmark* b) {
 
 void local_arguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"side", "threads"});
-  for (int side : {128, 256, 512}) {
+  for (int side : {128, 256, 512, 1024}) {
     for (int threads : {1, 2}) b->Args({side, threads});
   }
 }

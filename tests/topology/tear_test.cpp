@@ -7,9 +7,11 @@
 #include <numeric>
 
 #include "cloth_test_support.hpp"
+#include "solver/pd/particle_coloring.hpp"
 #include "topology/cloth_properties.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
+#include "topology/refine.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -296,6 +298,21 @@ TEST_P(CrackTipTest, TheCrackRunsAcrossTheStretchNotAlongTheGridLines) {
     EXPECT_NEAR(std::abs(edge.normalized().dot(along)), 0.0, 1e-9) << "torn edge not across";
   }
   EXPECT_EQ(torn, 2 * 6);  // both lips of each torn edge
+}
+
+TEST_P(CrackTipTest, TheParticleColoringStaysValidAfterRefinementAndTearing) {
+  stretch_along_z(1.3);
+  RefinementOptions refinement;
+  refinement.strain_threshold = 0.1;
+  refinement.min_edge_length_m = 0.02;
+  EXPECT_GT(refine(lcc, refinement, springs).splits, 0);
+  TearingOptions tearing;
+  tearing.strain_threshold = 0.2;
+  tearing.max_tears_per_step = 10;
+  tearing.tip_min_edge_length_m = 0.01;
+  EXPECT_EQ(tear(lcc, tearing, 100000, springs).tears, 10);
+  const CompiledCloth cloth = compile(lcc);
+  EXPECT_TRUE(is_valid_coloring(cloth.model, color_particles(cloth.model)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Triangles, CrackTipTest, ::testing::Values(GridCells::triangles));
