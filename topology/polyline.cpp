@@ -34,11 +34,4 @@ double polyline_segment_distance(const std::vector<Eigen::Vector3d>& points,
   return nearest_m;
 }
 
-double polyline_length(const std::vector<Eigen::Vector3d>& points) {
-  double length_m = 0.0;
-  for (std::size_t k = 0; k + 1 < points.size(); ++k)
-    length_m += (points[k + 1] - points[k]).norm();
-  return length_m;
-}
-
 }  // namespace tissu

@@ -22,7 +22,4 @@ PolylineProjection project_on_polyline(const std::vector<Eigen::Vector3d>& point
 double polyline_segment_distance(const std::vector<Eigen::Vector3d>& points,
                                  const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
-/// Total length of the polyline (m).
-double polyline_length(const std::vector<Eigen::Vector3d>& points);
-
 }  // namespace tissu
