@@ -20,8 +20,8 @@ struct WeakRegion {
 };
 
 struct TearingOptions {
-  /// An edge whose engineering strain l / l0 - 1 exceeds this tears the cloth at its most strained
-  /// end (dimensionless); 0 disables tearing.
+  /// An edge whose engineering strain l / l0 - 1 exceeds this breaks the cloth at one of its ends
+  /// (see tear()); dimensionless, 0 disables tearing by strain.
   double strain_threshold = 0.0;
   std::vector<WeakRegion> weak_regions;  ///< the lowest factor of the regions holding an edge wins
   /// Edges unsewn per pass at most (ARCSim's max_cracks). Small values let the solver relax the
