@@ -4,6 +4,13 @@
 
 namespace tissu {
 
+double edge_engineering_strain(const ClothComplex& lcc, Dart_const_handle d) {
+  const auto a = lcc.vertex_attribute(d), b = lcc.vertex_attribute(lcc.next(d));
+  const double rest_m =
+      std::sqrt(CGAL::squared_distance(a->info().rest_position, b->info().rest_position));
+  return std::sqrt(CGAL::squared_distance(a->point(), b->point())) / rest_m - 1.0;
+}
+
 std::vector<float> face_edge_strain(const ClothComplex& lcc) {
   std::vector<float> strain;
   strain.reserve(lcc.attributes<2>().size());
@@ -11,11 +18,7 @@ std::vector<float> face_edge_strain(const ClothComplex& lcc) {
     double sum = 0.0;
     int edges = 0;
     for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
-      const auto a = lcc.vertex_attribute(e), b = lcc.vertex_attribute(lcc.next(e));
-      const double rest_m =
-          std::sqrt(CGAL::squared_distance(a->info().rest_position, b->info().rest_position));
-      const double now_m = std::sqrt(CGAL::squared_distance(a->point(), b->point()));
-      sum += now_m / rest_m - 1.0;
+      sum += edge_engineering_strain(lcc, e);
       ++edges;
     }
     strain.push_back(static_cast<float>(sum / edges));

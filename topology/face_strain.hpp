@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// How stretched each face is, for strain colouring (and later for refinement and tearing).
+/// How stretched edges and faces are: for strain colouring, refinement and tearing.
 
 #include <vector>
 
@@ -8,9 +8,12 @@
 
 namespace tissu {
 
-/// Per face, in one_dart_per_cell<2> order (the order of current_mesh()), the mean engineering
-/// strain of its edges: mean over edges of |x_a - x_b| / |X_a - X_b| - 1, with x current and X
+/// Engineering strain of the dart's edge, |x_a - x_b| / |X_a - X_b| - 1 with x current and X
 /// material coordinates. Dimensionless; > 0 stretched, < 0 compressed.
+double edge_engineering_strain(const ClothComplex& lcc, Dart_const_handle dart);
+
+/// Per face, in one_dart_per_cell<2> order (the order of current_mesh()), the mean engineering
+/// strain of its edges (edge_engineering_strain).
 std::vector<float> face_edge_strain(const ClothComplex& lcc);
 
 }  // namespace tissu

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "topology/cloth_properties.hpp"
+#include "topology/face_strain.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {
@@ -60,11 +61,24 @@ bool bisect_along_longest_edge_path(ClothComplex& lcc, Dart_handle edge, std::si
   return true;
 }
 
+/// An edge to bisect, with its far end to notice when a propagation path bisected it first.
+using SplitQueue = std::vector<std::pair<Dart_handle, Vertex_handle>>;
+
+/// Queues the longest rest-space edge of the triangle of `side`, once per edge, if it is at least
+/// twice `min_edge_length_m`.
+void queue_longest_edge(ClothComplex& lcc, Dart_handle side, double min_edge_length_m,
+                        std::set<Dart_handle>& queued, SplitQueue& queue) {
+  const Dart_handle longest = longest_edge(lcc, side);
+  if (rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
+      queued.insert(edge_key(lcc, longest)).second) {
+    queue.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
+  }
+}
+
 /// Bisects each queued edge (given with its far end) along its longest-edge propagation path,
 /// skipping those an earlier path already bisected; returns the number of bisections.
-int bisect_queued(ClothComplex& lcc,
-                  const std::vector<std::pair<Dart_handle, Vertex_handle>>& queue,
-                  std::size_t particle_cap, const SpringSettings& settings) {
+int bisect_queued(ClothComplex& lcc, const SplitQueue& queue, std::size_t particle_cap,
+                  const SpringSettings& settings) {
   int splits = 0;
   for (const auto& [edge, far_end] : queue) {
     if (lcc.vertex_attribute(lcc.next(edge)) != far_end) continue;  // already bisected on a path
@@ -83,8 +97,7 @@ bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const Refineme
 }  // namespace
 
 double edge_strain(const ClothComplex& lcc, Dart_const_handle d) {
-  const double now_m = std::sqrt(CGAL::squared_distance(lcc.point(d), lcc.point(lcc.next(d))));
-  return std::abs(now_m / rest_length_m(lcc, d) - 1.0);
+  return std::abs(edge_engineering_strain(lcc, d));
 }
 
 double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
@@ -98,14 +111,10 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
 
 int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
                          int max_particles, const SpringSettings& settings) {
-  std::vector<std::pair<Dart_handle, Vertex_handle>> to_split;
+  SplitQueue to_split;
   std::set<Dart_handle> queued;
   for (Dart_handle d : darts_leaving(lcc, vertex)) {
-    const Dart_handle longest = longest_edge(lcc, d);
-    if (rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
-        queued.insert(edge_key(lcc, longest)).second) {
-      to_split.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
-    }
+    queue_longest_edge(lcc, d, min_edge_length_m, queued, to_split);
   }
   return bisect_queued(lcc, to_split, static_cast<std::size_t>(max_particles), settings);
 }
@@ -114,20 +123,15 @@ RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
                         const SpringSettings& settings) {
   RefinementReport report;
   // the longest edge of each triangle next to an edge over a threshold, in traversal order so
-  // that runs are reproducible, each with its far end to notice when a propagation split it
-  std::vector<std::pair<Dart_handle, Vertex_handle>> to_split;
+  // that runs are reproducible
+  SplitQueue to_split;
   std::set<Dart_handle> queued;
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     if (!over_threshold(lcc, d, options)) continue;
     ++report.candidate_edges;
-    std::vector<Dart_handle> sides{d};
-    if (!lcc.is_free<2>(d)) sides.push_back(lcc.opposite<2>(d));
-    for (Dart_handle side : sides) {
-      const Dart_handle longest = longest_edge(lcc, side);
-      if (rest_length_m(lcc, longest) >= 2.0 * options.min_edge_length_m &&
-          queued.insert(edge_key(lcc, longest)).second) {
-        to_split.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
-      }
+    queue_longest_edge(lcc, d, options.min_edge_length_m, queued, to_split);
+    if (!lcc.is_free<2>(d)) {
+      queue_longest_edge(lcc, lcc.opposite<2>(d), options.min_edge_length_m, queued, to_split);
     }
   }
   report.splits =

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "topology/cloth_properties.hpp"
+#include "topology/face_strain.hpp"
 #include "topology/local_update.hpp"
 #include "topology/polyline.hpp"
 #include "topology/refine.hpp"
@@ -148,14 +149,6 @@ std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min
   return edges;
 }
 
-/// Engineering strain l / l0 - 1 of the dart's edge (> 0 stretched).
-double edge_stretch(ClothComplex& lcc, Dart_handle d) {
-  const Vertex_handle a = lcc.vertex_attribute(d);
-  const Vertex_handle b = lcc.vertex_attribute(lcc.next(d));
-  const double rest_m = (rest_of(b) - rest_of(a)).norm();
-  return (to_eigen(b->point()) - to_eigen(a->point())).norm() / rest_m - 1.0;
-}
-
 /// An edge over its tearing strain, by its two ends.
 struct Overstretched {
   double ratio;  ///< strain over tearing strain, > 1
@@ -168,7 +161,8 @@ std::vector<Overstretched> overstretched_edges(ClothComplex& lcc, const TearingO
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     const Vertex_handle a = lcc.vertex_attribute(d);
     const Vertex_handle b = lcc.vertex_attribute(lcc.next(d));
-    const double ratio = edge_stretch(lcc, d) / tearing_strain_of(options, rest_of(a), rest_of(b));
+    const double ratio =
+        edge_engineering_strain(lcc, d) / tearing_strain_of(options, rest_of(a), rest_of(b));
     if (ratio > 1.0) edges.push_back({ratio, a, b});
   }
   std::stable_sort(edges.begin(), edges.end(), [](const Overstretched& x, const Overstretched& y) {
