@@ -21,6 +21,16 @@ inline void expect_valid_with_mass(const ClothComplex& lcc, double expected_kg,
   EXPECT_NEAR(complex_total_mass(lcc), expected_kg, 1e-12 * expected_kg) << when;
 }
 
+/// Total linear momentum sum m v of the particles (kg m/s).
+inline Eigen::Vector3d complex_momentum(const ClothComplex& lcc) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Vector3& u = v->info().velocity;
+    p += v->info().mass * Eigen::Vector3d(u.x(), u.y(), u.z());
+  }
+  return p;
+}
+
 inline SpringSettings all_springs() {
   SpringSettings s;
   s.structural = {true, 1000.0, 0.5};

@@ -93,20 +93,13 @@ TEST_F(CoarsenTest, CoarseningConservesMassAndMomentum) {
   refine_stretched_part();
   std::mt19937 random(5);
   std::uniform_real_distribution<double> speed(-1.0, 1.0);
-  Eigen::Vector3d momentum_before = Eigen::Vector3d::Zero();
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    if (v->info().pinned) continue;
-    v->info().velocity = Vector3(speed(random), speed(random), speed(random));
-    const Vector3& u = v->info().velocity;
-    momentum_before += v->info().mass * Eigen::Vector3d(u.x(), u.y(), u.z());
+    if (!v->info().pinned)
+      v->info().velocity = Vector3(speed(random), speed(random), speed(random));
   }
+  const Eigen::Vector3d momentum_before = test::complex_momentum(lcc);
   EXPECT_GT(coarsen_fully(RefinementOptions{}, 0.5), 0);
-  Eigen::Vector3d momentum_after = Eigen::Vector3d::Zero();
-  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Vector3& u = v->info().velocity;
-    momentum_after += v->info().mass * Eigen::Vector3d(u.x(), u.y(), u.z());
-  }
-  EXPECT_LT((momentum_after - momentum_before).norm(), 1e-14);  // kg m/s
+  EXPECT_LT((test::complex_momentum(lcc) - momentum_before).norm(), 1e-14);  // kg m/s
   EXPECT_NEAR(complex_total_mass(lcc), expected_mass_kg(), 1e-12 * expected_mass_kg());
 }
 
