@@ -7,6 +7,7 @@ packages=(
   libcgal-dev libeigen3-dev libassimp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev ffmpeg
+  gnuplot-nox # plots in docs/ (scripts/plot_pd_accuracy.sh)
 )
 missing=()
 for package in "${packages[@]}"; do
