@@ -1,7 +1,8 @@
 // Throughput of Projective Dynamics' global step: one sweep of each iterative global solver on
 // n x n grids with structural, shear and bending springs, 1 and 2 threads, reported as spring
 // updates per second (items_per_second: #S per sweep; each spring is read from both of its ends).
-// Also the local step with the right-hand side assembly, per spring. Results: docs/benchmarks.md.
+// Also the local step with the right-hand side assembly, per spring, and the cost of rebuilding the
+// system and its colouring after a topology change. Results: docs/benchmarks.md.
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -122,6 +123,35 @@ void BM_LocalStepAndRhs(benchmark::State& bench) {
   bench.counters["threads"] = static_cast<double>(bench.range(1));
 }
 
+/// What a topology change costs the iterative PD solvers: rebuilding the global system from a
+/// recompiled model, the greedy colouring of all particles included (update_pd_system), and the
+/// colouring alone. Compare with one sweep (BM_GlobalSweep) to judge whether recolouring only the
+/// changed neighbourhood would pay.
+void BM_RebuildSystem(benchmark::State& bench) {
+  State state;
+  const SpringModel model = grid(static_cast<int>(bench.range(0)), state);
+  PdSystem system;
+  int rebuilds = 0;
+  for (auto _ : bench) {
+    // alternating h forces a rebuild into the same buffers, as a workspace after a recompile
+    update_pd_system(model, time_step_s * (1 + ++rebuilds % 2), system);
+    benchmark::DoNotOptimize(system.diagonal.data());
+  }
+  bench.counters["particles"] = model.particle_count();
+}
+
+void BM_ColorParticles(benchmark::State& bench) {
+  State state;
+  const SpringModel model = grid(static_cast<int>(bench.range(0)), state);
+  PdSystem system;
+  update_pd_system(model, time_step_s, system);
+  for (auto _ : bench) {
+    color_particles(system.neighbour_offsets, system.neighbours, system.coloring, system.scratch);
+    benchmark::DoNotOptimize(system.coloring.color.data());
+  }
+  bench.counters["colors"] = system.coloring.color_count();
+}
+
 void sweep_arguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"solver", "side", "threads"});
   for (const PdGlobalSolver solver :
@@ -141,6 +171,20 @@ void local_arguments(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_GlobalSweep)->Apply(sweep_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RebuildSystem)
+    ->ArgName("side")
+    ->Arg(128)
+    ->Arg(256)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ColorParticles)
+    ->ArgName("side")
+    ->Arg(128)
+    ->Arg(256)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocalStepAndRhs)->Apply(local_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
