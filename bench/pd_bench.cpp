@@ -163,6 +163,11 @@ void sweep_arguments(benchmark::internal::Benchmark* b) {
   }
 }
 
+void side_arguments(benchmark::internal::Benchmark* b) {
+  b->ArgName("side");
+  for (int side : {128, 256, 512, 1024}) b->Arg(side);
+}
+
 void local_arguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"side", "threads"});
   for (int side : {128, 256, 512, 1024}) {
@@ -171,20 +176,8 @@ void local_arguments(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_GlobalSweep)->Apply(sweep_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_RebuildSystem)
-    ->ArgName("side")
-    ->Arg(128)
-    ->Arg(256)
-    ->Arg(512)
-    ->Arg(1024)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ColorParticles)
-    ->ArgName("side")
-    ->Arg(128)
-    ->Arg(256)
-    ->Arg(512)
-    ->Arg(1024)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RebuildSystem)->Apply(side_arguments)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ColorParticles)->Apply(side_arguments)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocalStepAndRhs)->Apply(local_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
