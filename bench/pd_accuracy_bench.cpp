@@ -133,9 +133,10 @@ double incremental_potential_j(const SpringModel& model, double time_step_s,
 
 /// The converged backward Euler step from `start`: minimises the incremental potential over the
 /// free particles by Newton's method from PD's first iterates, with the exact Hessian
-/// M/h^2 - df/dx shifted by the smallest lambda I (Levenberg-Marquardt) that keeps it positive
-/// definite, and a backtracking line search, to round-off. Pinned particles move at their
-/// velocity, as in every integrator. Returns the positions (m).
+/// M/h^2 - df/dx shifted by lambda I (Levenberg-Marquardt; lambda starts from a quarter of the last
+/// one and doubles until the matrix is positive definite, so it vanishes near a minimum and Newton
+/// converges quadratically) and a backtracking line search, to round-off. Pinned particles move at
+/// their velocity, as in every integrator. Returns the positions (m).
 Eigen::VectorXd backward_euler_step(const SpringModel& model, double h, const State& start) {
   const int particles = model.particle_count();
   const Eigen::Vector3d gravity = Environment().gravity;
