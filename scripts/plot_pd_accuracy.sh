@@ -2,7 +2,7 @@
 # Runs bench/pd_accuracy_bench (medians of 3) and plots each solver's error against its wall time
 # per step, one panel per scene, into docs/pd_accuracy.png. The benchmark's CSV is kept next to the
 # picture as docs/pd_accuracy.csv; `--plot-only` replots that CSV without running the benchmark.
-# Needs a Release build (scripts/build.sh) and gnuplot (scripts/setup.sh installs both). The
+# Needs a Release build (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). The
 # benchmark takes about 25 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,12 +12,18 @@ csv=docs/pd_accuracy.csv
 points=$(mktemp)
 trap 'rm -f "$points"' EXIT
 
+fail() { echo "plot_pd_accuracy: $*" >&2; exit 1; }
+[[ $# -eq 0 || ( $# -eq 1 && $1 == --plot-only ) ]] || fail "usage: $0 [--plot-only]"
+command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
 if [[ ${1:-} != --plot-only ]]; then
-  "$build_dir/bench/pd_accuracy_bench" --benchmark_repetitions=3 --benchmark_min_time=0.1 \
+  bench=$build_dir/bench/pd_accuracy_bench
+  [[ -x $bench ]] || fail "$bench not found; build it with scripts/build.sh"
+  "$bench" --benchmark_repetitions=3 --benchmark_min_time=0.1 \
     --benchmark_report_aggregates_only=true --benchmark_out="$csv" --benchmark_out_format=csv
 fi
+[[ -f $csv ]] || fail "$csv not found; run without --plot-only first"
 
-# "curve/<scene>/<solver>/<knob>_median" rows -> "<scene> <solver> <ms per step> <error>"
+# "curve/<scene>/<solver>/<knob>/real_time_median" rows -> "<scene> <solver> <ms per step> <error>"
 awk -F, '
   /^name,/ { for (c = 1; c <= NF; ++c) column[$c] = c; next }
   column["name"] && $1 ~ /^"curve\// && $1 ~ /_median"$/ {
