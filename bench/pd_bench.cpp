@@ -156,7 +156,7 @@ void sweep_arguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"solver", "side", "threads"});
   for (const PdGlobalSolver solver :
        {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
-        PdGlobalSolver::colored_gauss_seidel}) {
+        PdGlobalSolver::colored_gauss_seidel, PdGlobalSolver::block_gauss_seidel}) {
     for (int side : {128, 256, 512, 1024}) {
       for (int threads : {1, 2}) b->Args({static_cast<int>(solver), side, threads});
     }

@@ -51,6 +51,8 @@ enum class PdGlobalSolver {
   gauss_seidel,          ///< sequential Gauss-Seidel in particle order (course's global step)
   colored_gauss_seidel,  ///< Gauss-Seidel colour by colour, each colour in parallel
                          ///< (Fratarcangeli et al. 2016; the course's red-black ordering)
+  block_gauss_seidel,    ///< sequential Gauss-Seidel inside blocks of consecutive particles,
+                         ///< blocks coloured so that those of one colour run in parallel
 };
 
 /// Iterations of the Projective Dynamics integrator (course, Algorithm 1).

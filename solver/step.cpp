@@ -54,6 +54,8 @@ const char* to_string(PdGlobalSolver solver) {
       return "gauss_seidel";
     case PdGlobalSolver::colored_gauss_seidel:
       return "colored_gauss_seidel";
+    case PdGlobalSolver::block_gauss_seidel:
+      return "block_gauss_seidel";
   }
   return "unknown";
 }

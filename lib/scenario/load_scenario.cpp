@@ -61,7 +61,8 @@ ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
   o.global_solver =
       read_named(pd, "global_solver", o.global_solver,
                  {PdGlobalSolver::direct, PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
-                  PdGlobalSolver::gauss_seidel, PdGlobalSolver::colored_gauss_seidel});
+                  PdGlobalSolver::gauss_seidel, PdGlobalSolver::colored_gauss_seidel,
+                  PdGlobalSolver::block_gauss_seidel});
   o.iterations = pd.integer_or("iterations", o.iterations, 1, 100000);
   o.linear_iterations = pd.integer_or("linear_iterations", o.linear_iterations, 1, 100000);
   o.tolerance = pd.number_or("tolerance", o.tolerance, between(0.0, 1.0, ""));

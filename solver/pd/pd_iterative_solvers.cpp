@@ -110,6 +110,23 @@ void pd_colored_gauss_seidel_sweep(const PdSystem& system, const Eigen::VectorXd
   }
 }
 
+void pd_block_gauss_seidel_sweep(const PdSystem& system, const Eigen::VectorXd& c,
+                                 Eigen::VectorXd& p) {
+  const ParticleColoring& blocks = system.block_coloring;
+  const int particles = static_cast<int>(system.free_particles.size());
+#pragma omp parallel if (particles >= min_parallel_items)
+  for (int color = 0; color < blocks.color_count(); ++color) {
+#pragma omp for schedule(static)
+    for (int k = blocks.color_offsets[color]; k < blocks.color_offsets[color + 1]; ++k) {
+      const int block = blocks.order[k];
+      for (int f = system.block_offsets[block]; f < system.block_offsets[block + 1]; ++f) {
+        const int i = system.free_particles[f];
+        p.segment<3>(3 * i) = local_solution(system, c, p, i);
+      }
+    }
+  }
+}
+
 double pd_chebyshev_spectral_radius(const PdSystem& system,
                                     const ProjectiveDynamicsOptions& options) {
   if (options.chebyshev_spectral_radius > 0.0) return options.chebyshev_spectral_radius;
@@ -135,6 +152,9 @@ void pd_iterative_solve(const PdSystem& system, const ProjectiveDynamicsOptions&
         break;
       case PdGlobalSolver::colored_gauss_seidel:
         pd_colored_gauss_seidel_sweep(system, c, p);
+        break;
+      case PdGlobalSolver::block_gauss_seidel:
+        pd_block_gauss_seidel_sweep(system, c, p);
         break;
       case PdGlobalSolver::direct:
         break;

@@ -53,6 +53,15 @@ void pd_gauss_seidel_sweep(const PdSystem& system, const Eigen::VectorXd& c, Eig
 void pd_colored_gauss_seidel_sweep(const PdSystem& system, const Eigen::VectorXd& c,
                                    Eigen::VectorXd& p);
 
+/// One block Gauss-Seidel sweep: sequential Gauss-Seidel in ascending order inside each block of
+/// consecutive free particles (system.block_offsets), block colour by block colour, the blocks of
+/// one colour in parallel. They share no spring, so the result is the same for any thread count.
+/// Each block streams its own rows and positions once, as sequential Gauss-Seidel does, where
+/// the particle-coloured sweep reads all positions once per colour. (A block-level multicolour
+/// ordering, as in parallel SOR; the blocks' coloring stands in for the course's red-black sets.)
+void pd_block_gauss_seidel_sweep(const PdSystem& system, const Eigen::VectorXd& c,
+                                 Eigen::VectorXd& p);
+
 /// Chebyshev's rho from the options: options.chebyshev_spectral_radius if positive, otherwise
 /// 1 - gamma (1 - system.jacobi_radius_bound) (Gershgorin's bound, relaxed).
 double pd_chebyshev_spectral_radius(const PdSystem& system,

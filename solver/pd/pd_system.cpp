@@ -19,6 +19,38 @@ std::uint64_t next_generation() {
   return ++counter;
 }
 
+/// Blocks of consecutive free particles for block Gauss-Seidel, sized from the model alone (so
+/// the sweep is the same for any thread count): about 64 blocks, of 64 to 4096 particles (4096
+/// particles' rows and positions, about 0.8 MB, stay in a core's cache). On a grid numbered row by
+/// row a block is a band of rows, and the block graph needs 2 or 3 colours.
+void build_blocks(PdSystem& system) {
+  const int free_count = static_cast<int>(system.free_particles.size());
+  const int block_size = std::clamp(free_count / 64, 64, 4096);
+  const int blocks = (free_count + block_size - 1) / block_size;
+  system.block_offsets.resize(blocks + 1);
+  for (int b = 0; b <= blocks; ++b) system.block_offsets[b] = std::min(b * block_size, free_count);
+  system.block_of.assign(system.pinned.size(), -1);
+  for (int f = 0; f < free_count; ++f) system.block_of[system.free_particles[f]] = f / block_size;
+  // block b's neighbours: the other blocks its particles' springs reach, each listed once
+  system.block_graph_offsets.assign(1, 0);
+  system.block_graph_neighbours.clear();
+  system.scratch.assign(blocks, -1);  // scratch[c] == b once block c is listed for block b
+  for (int b = 0; b < blocks; ++b) {
+    for (int f = system.block_offsets[b]; f < system.block_offsets[b + 1]; ++f) {
+      const int i = system.free_particles[f];
+      for (int e = system.neighbour_offsets[i]; e < system.neighbour_offsets[i + 1]; ++e) {
+        const int other = system.block_of[system.neighbours[e]];
+        if (other < 0 || other == b || system.scratch[other] == b) continue;
+        system.scratch[other] = b;
+        system.block_graph_neighbours.push_back(other);
+      }
+    }
+    system.block_graph_offsets.push_back(static_cast<int>(system.block_graph_neighbours.size()));
+  }
+  color_particles(system.block_graph_offsets, system.block_graph_neighbours, system.block_coloring,
+                  system.scratch);
+}
+
 }  // namespace
 
 bool update_pd_system(const SpringModel& model, double h, PdSystem& system) {
@@ -72,6 +104,7 @@ bool update_pd_system(const SpringModel& model, double h, PdSystem& system) {
     }
     system.free_color_offsets.push_back(static_cast<int>(system.free_color_order.size()));
   }
+  build_blocks(system);
   return true;
 }
 

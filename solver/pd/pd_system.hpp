@@ -41,10 +41,18 @@ struct PdSystem {
   std::vector<int> free_color_offsets;  ///< #colours+1 offsets into free_color_order
   std::vector<int> free_color_order;    ///< #F free particles by colour: colour c is
                                         ///< [free_color_offsets[c], free_color_offsets[c+1])
+  /// Block Gauss-Seidel: the free particles cut into blocks of consecutive ids (block b is
+  /// free_particles[block_offsets[b], block_offsets[b+1])), and the blocks coloured so that no
+  /// spring joins two blocks of one colour.
+  std::vector<int> block_offsets;   ///< #blocks+1
+  ParticleColoring block_coloring;  ///< colouring of the blocks (block ids, not particle ids)
   /// Gershgorin bound on the spectral radius of the Jacobi iteration matrix D^-1 (D - A):
   /// max over free i of sum s_ij / a_i, < 1 (dimensionless).
   double jacobi_radius_bound = 0.0;
-  std::vector<int> scratch;  ///< colouring scratch
+  std::vector<int> scratch;              ///< colouring scratch
+  std::vector<int> block_of;             ///< #P block of each free particle, -1 if pinned (scratch)
+  std::vector<int> block_graph_offsets;  ///< #blocks+1 (scratch)
+  std::vector<int> block_graph_neighbours;  ///< blocks sharing a spring with each block (scratch)
 };
 
 /// Makes `system` describe `model` at time step h (s): rebuilds it (O(#P + #S), allocating) if

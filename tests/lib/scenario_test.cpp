@@ -111,6 +111,10 @@ TEST(Scenario, ReadsProjectiveDynamicsOptions) {
   EXPECT_EQ(parse_scenario(minimal, "dir/s.json", {"simulation.pd.global_solver=chebyshev"})
                 .solver.pd.global_solver,
             PdGlobalSolver::chebyshev);
+  EXPECT_EQ(
+      parse_scenario(minimal, "dir/s.json", {"simulation.pd.global_solver=block_gauss_seidel"})
+          .solver.pd.global_solver,
+      PdGlobalSolver::block_gauss_seidel);
   EXPECT_THAT(error_of(minimal, {"simulation.pd.global_solver=sor"}),
               HasSubstr("simulation.pd.global_solver: expected one of \"direct\", \"jacobi\""));
 }

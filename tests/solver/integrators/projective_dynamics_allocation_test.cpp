@@ -57,7 +57,8 @@ namespace {
 TEST(ProjectiveDynamicsAllocation, NoHeapAllocationAfterTheFirstStep) {
   for (const PdGlobalSolver solver :
        {PdGlobalSolver::direct, PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
-        PdGlobalSolver::gauss_seidel, PdGlobalSolver::colored_gauss_seidel}) {
+        PdGlobalSolver::gauss_seidel, PdGlobalSolver::colored_gauss_seidel,
+        PdGlobalSolver::block_gauss_seidel}) {
     State state;
     SpringModel model = test::grid_model(20, 20, 0.025, 0.001, 300.0, 0.0, state);
     model.pinned[0] = 1;

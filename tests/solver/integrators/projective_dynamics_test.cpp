@@ -22,9 +22,12 @@
 namespace tissu {
 namespace {
 
-const PdGlobalSolver all_solvers[] = {PdGlobalSolver::direct, PdGlobalSolver::jacobi,
-                                      PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
-                                      PdGlobalSolver::colored_gauss_seidel};
+const PdGlobalSolver all_solvers[] = {PdGlobalSolver::direct,
+                                      PdGlobalSolver::jacobi,
+                                      PdGlobalSolver::chebyshev,
+                                      PdGlobalSolver::gauss_seidel,
+                                      PdGlobalSolver::colored_gauss_seidel,
+                                      PdGlobalSolver::block_gauss_seidel};
 
 // gravity only: no air damping, no wind, so that PD and implicit Euler solve the same equation
 SolverParams gravity_only(double h) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <random>
 
 #include "solver/pd/pd_direct_solver.hpp"
@@ -15,9 +16,9 @@
 namespace tissu {
 namespace {
 
-const PdGlobalSolver iterative_solvers[] = {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev,
-                                            PdGlobalSolver::gauss_seidel,
-                                            PdGlobalSolver::colored_gauss_seidel};
+const PdGlobalSolver iterative_solvers[] = {
+    PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
+    PdGlobalSolver::colored_gauss_seidel, PdGlobalSolver::block_gauss_seidel};
 
 struct LinearProblem {
   SpringModel model;
@@ -186,6 +187,48 @@ TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
   // a copied solver starts unfactorised
   PdDirectSolver copy = direct;
   EXPECT_EQ(copy.factorization_count(), 0);
+}
+
+// every free particle in exactly one block, and no spring between two blocks of one colour
+void expect_valid_blocks(const SpringModel& model, const PdSystem& system) {
+  const std::vector<int>& offsets = system.block_offsets;
+  ASSERT_FALSE(offsets.empty());
+  EXPECT_EQ(offsets.front(), 0);
+  EXPECT_EQ(offsets.back(), static_cast<int>(system.free_particles.size()));
+  EXPECT_TRUE(std::is_sorted(offsets.begin(), offsets.end()));
+  const int blocks = static_cast<int>(offsets.size()) - 1;
+  ASSERT_EQ(static_cast<int>(system.block_coloring.color.size()), blocks);
+  std::vector<int> block_of(model.particle_count(), -1);
+  for (int b = 0; b < blocks; ++b) {
+    for (int f = offsets[b]; f < offsets[b + 1]; ++f) block_of[system.free_particles[f]] = b;
+  }
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const int a = block_of[model.springs(s, 0)], b = block_of[model.springs(s, 1)];
+    if (a < 0 || b < 0 || a == b) continue;
+    EXPECT_NE(system.block_coloring.color[a], system.block_coloring.color[b]) << "spring " << s;
+  }
+}
+
+TEST(PdSystem, NoSpringJoinsTwoBlocksOfOneColour) {
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    State state;
+    // 1999 free particles: 32 blocks of 64 (the last shorter), joined at random
+    SpringModel model = test::random_model(2000, 6000, 0, seed, state);
+    model.pinned[seed] = 1;
+    finalize_model(model);
+    PdSystem system;
+    update_pd_system(model, 0.01, system);
+    SCOPED_TRACE(seed);
+    EXPECT_EQ(system.block_offsets.size(), 33u);
+    expect_valid_blocks(model, system);
+  }
+  // a 100 x 100 grid numbered row by row: blocks are bands of rows, and few colours suffice
+  State state;
+  const SpringModel grid = test::grid_model(100, 100, 0.01, 0.002, 200.0, 0.0, state);
+  PdSystem system;
+  update_pd_system(grid, 0.01, system);
+  expect_valid_blocks(grid, system);
+  EXPECT_LE(system.block_coloring.color_count(), 3);
 }
 
 }  // namespace
