@@ -20,9 +20,10 @@ std::uint64_t next_generation() {
 }
 
 /// Blocks of consecutive free particles for block Gauss-Seidel, sized from the model alone (so
-/// the sweep is the same for any thread count): about 64 blocks, of 64 to 4096 particles (4096
-/// particles' rows and positions, about 0.8 MB, stay in a core's cache). On a grid numbered row by
-/// row a block is a band of rows, and the block graph needs 2 or 3 colours.
+/// the sweep is the same for any thread count): about 64 blocks, of 64 to 4096 particles (a
+/// block's rows and positions, at most about 0.8 MB, are read once per sweep, in order). On a grid
+/// numbered row by row a block is a band of rows, and the block graph needs 2 or 3 colours; on a
+/// refined mesh, whose new particles are numbered last, blocks are less compact and need more.
 void build_blocks(PdSystem& system) {
   const int free_count = static_cast<int>(system.free_particles.size());
   const int block_size = std::clamp(free_count / 64, 64, 4096);
