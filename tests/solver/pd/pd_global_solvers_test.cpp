@@ -106,7 +106,7 @@ TEST(PdGlobalSolvers, ConvergeToTheDirectSolveOnAClothGrid) {
   expect_converges_to_direct(problem, 200000);
 }
 
-TEST(PdGlobalSolvers, ChebyshevIsFasterThanJacobi) {
+TEST(PdGlobalSolvers, ChebyshevAndGaussSeidelBeatJacobiAndBlocksCostNoConvergence) {
   // stiff cloth at 30 steps per second held by two corners: slow smooth modes, Jacobi's radius
   // close to 1, where Wang 2015's acceleration pays
   State state;
@@ -137,6 +137,12 @@ TEST(PdGlobalSolvers, ChebyshevIsFasterThanJacobi) {
             0.1 * error_after(PdGlobalSolver::jacobi, 100));
   EXPECT_LT(error_after(PdGlobalSolver::gauss_seidel, 100),
             error_after(PdGlobalSolver::jacobi, 100));
+  // block Gauss-Seidel (4 blocks of 4 rows here) loses nothing against the sequential order:
+  // after 100 sweeps its error is within 10 % of Gauss-Seidel's (0.257 against 0.258 m here;
+  // the particle-coloured sweep gives 0.250 m and Jacobi 0.346 m)
+  const double block_m = error_after(PdGlobalSolver::block_gauss_seidel, 100);
+  EXPECT_NEAR(block_m / error_after(PdGlobalSolver::gauss_seidel, 100), 1.0, 0.1);
+  EXPECT_LT(block_m, error_after(PdGlobalSolver::jacobi, 100));
 }
 
 TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
