@@ -36,6 +36,7 @@
 #include "solver/step.hpp"
 #include "topology/apply_pins.hpp"
 #include "topology/build_cloth_complex.hpp"
+#include "topology/cloth_properties.hpp"
 #include "topology/compile.hpp"
 #include "topology/grid_mesh.hpp"
 #include "topology/refine.hpp"
@@ -227,23 +228,13 @@ Scene sheet_scene(const std::string& name, int particles_per_side, double time_s
   return scene;
 }
 
-Vertex_handle nearest_vertex(ClothComplex& lcc, const Point3& point) {
-  Vertex_handle nearest = lcc.vertex_attributes().begin();
-  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    if (CGAL::squared_distance(v->point(), point) <
-        CGAL::squared_distance(nearest->point(), point)) {
-      nearest = v;
-    }
-  }
-  return nearest;
-}
-
 /// 41 x 41 particles, refined down to 1/160 m edges around (0.3, 0.7) and (0.5, 0.5), then cut
 /// along x = 0.5 from the free edge to the centre.
 Scene adaptive_torn_scene() {
   ClothComplex lcc;
   build_sheet(40, lcc);
-  for (const Point3& centre : {Point3(0.3, 0.7, 0.0), Point3(0.5, 0.5, 0.0)}) {
+  for (const Eigen::Vector3d& centre :
+       {Eigen::Vector3d(0.3, 0.7, 0.0), Eigen::Vector3d(0.5, 0.5, 0.0)}) {
     for (int ring = 0; ring < 4; ++ring) {
       refine_around_vertex(lcc, nearest_vertex(lcc, centre), 1.0 / 160.0, 100000,
                            undamped_cloth_springs());

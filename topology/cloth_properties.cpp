@@ -43,14 +43,29 @@ void lump_masses(ClothComplex& lcc) {
   }
 }
 
+double edge_rest_length_m(const ClothComplex& lcc, Dart_const_handle dart) {
+  return rest_distance(rest_position(lcc, dart), rest_position(lcc, lcc.next(dart)));
+}
+
+Vertex_handle nearest_vertex(ClothComplex& lcc, const Eigen::Vector3d& rest_point_m) {
+  const auto distance2 = [&](Vertex_handle v) {
+    const Point3& r = v->info().rest_position;
+    return (Eigen::Vector3d(r.x(), r.y(), r.z()) - rest_point_m).squaredNorm();
+  };
+  Vertex_handle nearest = lcc.vertex_attributes().begin();
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    if (distance2(v) < distance2(nearest)) nearest = v;
+  }
+  return nearest;
+}
+
 Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart) {
   return lcc.vertex_attribute(lcc.next(lcc.next(dart)));
 }
 
 void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
   DartMechanics& mechanics = lcc.info(d);
-  mechanics.edge = make_spring(
-      settings.structural, rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(d))));
+  mechanics.edge = make_spring(settings.structural, edge_rest_length_m(lcc, d));
 
   mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {

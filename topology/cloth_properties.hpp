@@ -3,6 +3,7 @@
 /// Rest areas, lumped masses and springs of a cloth complex, computed from material coordinates so
 /// that they do not depend on the current deformation.
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "topology/cloth_complex.hpp"
@@ -33,6 +34,13 @@ void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex);
 
 /// The vertex that follows the dart's edge in the dart's face (the apex for a triangle).
 Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart);
+
+/// Rest length of the dart's edge, the distance of its ends' material coordinates (m).
+double edge_rest_length_m(const ClothComplex& lcc, Dart_const_handle dart);
+
+/// The vertex whose material coordinates are nearest `rest_point_m` (the first in container order
+/// among equally near ones). The complex must have a vertex.
+Vertex_handle nearest_vertex(ClothComplex& lcc, const Eigen::Vector3d& rest_point_m);
 
 /// The darts starting at `vertex`: one per incident face.
 std::vector<Dart_handle> darts_leaving(ClothComplex& lcc, Vertex_handle vertex);

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "topology/cloth_properties.hpp"
+
 namespace tissu {
 
 double edge_engineering_strain(const ClothComplex& lcc, Dart_const_handle d) {
-  const auto a = lcc.vertex_attribute(d), b = lcc.vertex_attribute(lcc.next(d));
-  const double rest_m =
-      std::sqrt(CGAL::squared_distance(a->info().rest_position, b->info().rest_position));
-  return std::sqrt(CGAL::squared_distance(a->point(), b->point())) / rest_m - 1.0;
+  const double now_m = std::sqrt(CGAL::squared_distance(lcc.point(d), lcc.point(lcc.next(d))));
+  return now_m / edge_rest_length_m(lcc, d) - 1.0;
 }
 
 std::vector<float> face_edge_strain(const ClothComplex& lcc) {

@@ -11,11 +11,6 @@
 namespace tissu {
 namespace {
 
-double rest_length_m(const ClothComplex& lcc, Dart_const_handle d) {
-  return std::sqrt(CGAL::squared_distance(lcc.vertex_attribute(d)->info().rest_position,
-                                          lcc.vertex_attribute(lcc.next(d))->info().rest_position));
-}
-
 Vector3 face_normal(const ClothComplex& lcc, Dart_const_handle d) {
   const Point3& a = lcc.point(d);
   const Point3& b = lcc.point(lcc.next(d));
@@ -27,7 +22,7 @@ Vector3 face_normal(const ClothComplex& lcc, Dart_const_handle d) {
 Dart_handle longest_edge(ClothComplex& lcc, Dart_handle d) {
   Dart_handle best = d;
   for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
-    if (rest_length_m(lcc, e) > rest_length_m(lcc, best)) best = e;
+    if (edge_rest_length_m(lcc, e) > edge_rest_length_m(lcc, best)) best = e;
   }
   return best;
 }
@@ -50,7 +45,9 @@ bool bisect_along_longest_edge_path(ClothComplex& lcc, Dart_handle edge, std::si
   while (!lcc.is_free<2>(edge)) {
     const Dart_handle neighbours_longest = longest_edge(lcc, lcc.opposite<2>(edge));
     // a tie counts as longest: equal lengths cannot grow along the path
-    if (rest_length_m(lcc, neighbours_longest) <= rest_length_m(lcc, edge) * (1.0 + 1e-12)) break;
+    if (edge_rest_length_m(lcc, neighbours_longest) <=
+        edge_rest_length_m(lcc, edge) * (1.0 + 1e-12))
+      break;
     if (!bisect_along_longest_edge_path(lcc, neighbours_longest, particle_cap, settings, splits)) {
       return false;
     }
@@ -69,7 +66,7 @@ using SplitQueue = std::vector<std::pair<Dart_handle, Vertex_handle>>;
 void queue_longest_edge(ClothComplex& lcc, Dart_handle side, double min_edge_length_m,
                         std::set<Dart_handle>& queued, SplitQueue& queue) {
   const Dart_handle longest = longest_edge(lcc, side);
-  if (rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
+  if (edge_rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
       queued.insert(edge_key(lcc, longest)).second) {
     queue.emplace_back(longest, lcc.vertex_attribute(lcc.next(longest)));
   }
@@ -88,7 +85,7 @@ int bisect_queued(ClothComplex& lcc, const SplitQueue& queue, std::size_t partic
 }
 
 bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
-  return (o.max_edge_length_m > 0.0 && rest_length_m(lcc, d) > o.max_edge_length_m) ||
+  return (o.max_edge_length_m > 0.0 && edge_rest_length_m(lcc, d) > o.max_edge_length_m) ||
          (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
          (o.curvature_threshold_rad > 0.0 &&
           edge_dihedral_angle(lcc, d) > o.curvature_threshold_rad);

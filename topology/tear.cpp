@@ -180,15 +180,6 @@ Vertex_handle breaking_end(ClothComplex& lcc, const Overstretched& edge) {
   return !edge.a->info().on_crack && edge.b->info().on_crack ? edge.b : edge.a;
 }
 
-Vertex_handle nearest_vertex(ClothComplex& lcc, const Eigen::Vector3d& rest_point_m) {
-  Vertex_handle nearest = lcc.vertex_attributes().begin();
-  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    if ((rest_of(v) - rest_point_m).squaredNorm() < (rest_of(nearest) - rest_point_m).squaredNorm())
-      nearest = v;
-  }
-  return nearest;
-}
-
 /// The edges of the knife's walk along the polyline (see cut_along).
 std::vector<Dart_handle> cut_path(ClothComplex& lcc, const std::vector<Eigen::Vector3d>& polyline) {
   std::vector<Dart_handle> path;
