@@ -12,11 +12,12 @@ void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
                                          : read_mesh(scenario.cloth.mesh_file);
   // refinement (adaptive, or around crack tips) bisects triangles: quads are cut once, here
   // (their shear springs become edges)
-  const bool refines =
-      scenario.adaptive.enabled ||
-      (scenario.tearing.enabled && scenario.tearing.options.tip_min_edge_length_m > 0.0);
-  if (refines) mesh = triangulate_quads(mesh);
-  build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
+  if (scenario.refines_cloth()) mesh = triangulate_quads(mesh);
+  try {
+    build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
+  } catch (const std::invalid_argument& e) {  // a cell the material's formulation does not define
+    throw MeshError(scenario.file.string() + ": cloth: " + e.what());
+  }
   if (scenario.cloth.grid && scenario.cloth.grid->pleats > 0) {
     place_particles(grid_initial_positions(*scenario.cloth.grid), lcc);
   }

@@ -1,6 +1,12 @@
 #include "topology/cloth_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+#include "topology/membrane_stiffness.hpp"
 
 namespace tissu {
 namespace {
@@ -13,9 +19,58 @@ double rest_distance(const Point3& a, const Point3& b) {
   return std::sqrt(CGAL::squared_distance(a, b));
 }
 
-DartSpring make_spring(const SpringKindSettings& kind, double rest_length_m) {
+DartSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
+                       double rest_length_m) {
   if (!kind.enabled || !(rest_length_m > 0.0)) return DartSpring{SpringSlot::absent, 0, 0, 0};
-  return DartSpring{SpringSlot::present, kind.stiffness, kind.damping, rest_length_m};
+  return DartSpring{SpringSlot::present, stiffness_n_per_m, kind.damping, rest_length_m};
+}
+
+Eigen::Vector3d rest_vector(const ClothComplex& lcc, Dart_const_handle dart) {
+  const Point3& p = rest_position(lcc, dart);
+  return {p.x(), p.y(), p.z()};
+}
+
+/// What the face of `dart` gives the springs along the dart's edge and on the dart's diagonal
+/// (quads) under `material`.
+struct FaceShare {
+  double edge_n_per_m = 0.0;
+  double diagonal_n_per_m = 0.0;
+};
+
+[[noreturn]] void refuse_face(const ClothComplex& lcc, Dart_const_handle dart,
+                              const Material& material, std::string_view expected) {
+  const Point3& p = rest_position(lcc, dart);
+  std::ostringstream out;
+  out << "material formulation \"" << to_string(material.formulation) << "\" is defined on "
+      << expected << "; the face with a corner at rest position (" << p.x() << ", " << p.y() << ", "
+      << p.z() << ") m has " << lcc.darts_of_orbit<1>(dart).size() << " corners";
+  throw std::invalid_argument(out.str());
+}
+
+FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
+                             const Material& material) {
+  const FormulationCells cells = formulation_cells(material.formulation);
+  const auto corners = lcc.darts_of_orbit<1>(dart).size();
+  const Dart_const_handle next = lcc.next(dart);
+  const Dart_const_handle after = lcc.next(next);
+  if (corners == 3 && cells != FormulationCells::rectangles) {
+    const TriangleStiffness share =
+        triangle_stiffness(material, {edge_rest_length_m(lcc, dart), edge_rest_length_m(lcc, next),
+                                      edge_rest_length_m(lcc, after)});
+    return {share.edge_n_per_m[0], 0.0};
+  }
+  if (corners == 4 && cells != FormulationCells::triangles) {
+    // sides averaged over opposite edges: exact for rectangles, the paper's element
+    const double side_a_m = 0.5 * (edge_rest_length_m(lcc, dart) + edge_rest_length_m(lcc, after));
+    const double side_b_m =
+        0.5 * (edge_rest_length_m(lcc, next) + edge_rest_length_m(lcc, lcc.next(after)));
+    const RectangleStiffness share = rectangle_stiffness(material, side_a_m, side_b_m);
+    return {share.side_a_n_per_m, share.diagonal_n_per_m};
+  }
+  refuse_face(lcc, dart, material,
+              cells == FormulationCells::triangles    ? "triangles"
+              : cells == FormulationCells::rectangles ? "rectangles (quad cells)"
+                                                      : "triangles and rectangles");
 }
 
 }  // namespace
@@ -64,24 +119,45 @@ Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart) {
 }
 
 void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
+  const Material* material = settings.material ? &*settings.material : nullptr;
   DartMechanics& mechanics = lcc.info(d);
-  mechanics.edge = make_spring(settings.structural, edge_rest_length_m(lcc, d));
+  double edge_stiffness = settings.structural.stiffness;
+  if (material) {
+    edge_stiffness = face_share_of_edge(lcc, d, *material).edge_n_per_m;
+    if (!lcc.is_free<2>(d)) {
+      edge_stiffness += face_share_of_edge(lcc, lcc.opposite<2>(d), *material).edge_n_per_m;
+    }
+  }
+  mechanics.edge = make_spring(settings.structural, edge_stiffness, edge_rest_length_m(lcc, d));
 
   mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {
     Vertex_handle here = vertex_after_edge(lcc, d);
     Vertex_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
     if (here != across) {
+      double stiffness = settings.bending.stiffness;
+      if (material) {
+        // from the same dart of the pair on both, so that the two darts agree to the bit
+        const Dart_handle e = std::min(d, lcc.opposite<2>(d));
+        const Dart_handle o = lcc.opposite<2>(e);
+        stiffness = bending_spring_stiffness(
+            *material, rest_vector(lcc, e), rest_vector(lcc, o),
+            rest_vector(lcc, lcc.next(lcc.next(e))), rest_vector(lcc, lcc.next(lcc.next(o))),
+            face_rest_area(lcc, e), static_cast<int>(lcc.darts_of_orbit<1>(e).size()),
+            face_rest_area(lcc, o), static_cast<int>(lcc.darts_of_orbit<1>(o).size()));
+      }
       mechanics.bending =
-          make_spring(settings.bending,
+          make_spring(settings.bending, stiffness,
                       rest_distance(here->info().rest_position, across->info().rest_position));
     }
   }
 
   mechanics.shear = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (lcc.darts_of_orbit<1>(d).size() == 4) {
+    const double stiffness = material ? face_share_of_edge(lcc, d, *material).diagonal_n_per_m
+                                      : settings.shear.stiffness;
     mechanics.shear = make_spring(
-        settings.shear,
+        settings.shear, stiffness,
         rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(lcc.next(d)))));
   }
 }

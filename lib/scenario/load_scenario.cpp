@@ -177,6 +177,15 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   }
   if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"));
   if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
+  if (s.springs.material && s.refines_cloth() &&
+      formulation_cells(s.springs.material->formulation) == FormulationCells::rectangles) {
+    throw ScenarioError(name +
+                        ": cloth.material.formulation: expected a formulation defined on "
+                        "triangles, as refinement (adaptive, or around crack tips) cuts the cloth "
+                        "into triangles, got \"" +
+                        std::string(to_string(s.springs.material->formulation)) +
+                        "\", defined on rectangles");
+  }
   if (top.has("output")) read_output(top.object("output"), s.output);
   if (top.has("render")) s.render = read_render(top.object("render"));
   top.finish();

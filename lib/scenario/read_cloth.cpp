@@ -46,15 +46,63 @@ ClothFrame read_frame(JsonObjectReader& section) {
   return frame;
 }
 
-SpringKindSettings read_spring_kind(JsonObjectReader& springs, std::string_view kind) {
+/// A kind's settings. With a material the stiffness comes from it: the kind is on unless
+/// switched off, and a "stiffness" key is refused.
+SpringKindSettings read_spring_kind(JsonObjectReader& springs, std::string_view kind,
+                                    bool from_material) {
   SpringKindSettings out;
+  out.enabled = from_material;
   if (!springs.has(kind)) return out;
   JsonObjectReader section = springs.object(kind);
   out.enabled = section.boolean_or("enabled", true);
-  out.stiffness = section.number("stiffness", positive(" (N/m)"));
+  if (from_material) {
+    if (section.has("stiffness")) {
+      section.fail("stiffness",
+                   "no stiffness: with \"material\" it comes from E, nu and thickness");
+    }
+  } else {
+    out.stiffness = section.number("stiffness", positive(" (N/m)"));
+  }
   out.damping = section.number_or("damping", 0.0, non_negative(" (N s/m)"));
   section.finish();
   return out;
+}
+
+std::vector<std::string> formulation_names() {
+  std::vector<std::string> names;
+  for (int f = 0; f < stiffness_formulation_count; ++f) {
+    names.emplace_back(to_string(static_cast<StiffnessFormulation>(f)));
+  }
+  return names;
+}
+
+Material read_material(JsonObjectReader material, const std::optional<GridOptions>& grid) {
+  Material m;
+  m.youngs_modulus_pa = material.number("E", positive(" (Young's modulus, Pa)"));
+  m.thickness_m = material.number("thickness", positive(" (m)"));
+  m.density_kg_per_m3 = material.number("density", positive(" (kg/m^3)"));
+  m.formulation = *stiffness_formulation_from_string(
+      material.choice_or("formulation", "delingette2008", formulation_names()));
+  m.poisson_ratio = material.number("nu", NumberRule{});
+  const PoissonRange range = supported_poisson_ratios(m.formulation);
+  if (!range.contains(m.poisson_ratio)) {
+    material.fail("nu", std::string("a Poisson ratio ") + (range.min == range.max ? "of " : "in ") +
+                            describe(range) + " for formulation \"" +
+                            std::string(to_string(m.formulation)) +
+                            "\": " + std::string(supported_range_reason(m.formulation)));
+  }
+  const FormulationCells cells = formulation_cells(m.formulation);
+  if (grid && cells != FormulationCells::triangles_and_rectangles &&
+      (grid->cells == GridCells::quads) != (cells == FormulationCells::rectangles)) {
+    material.fail("formulation",
+                  std::string("a formulation defined on the grid's ") +
+                      (grid->cells == GridCells::quads ? "quads" : "triangles") +
+                      " (cloth.grid.cells): \"" + std::string(to_string(m.formulation)) +
+                      "\" is defined on " +
+                      (cells == FormulationCells::triangles ? "triangles" : "rectangles"));
+  }
+  material.finish();
+  return m;
 }
 
 Side read_side(JsonObjectReader& pin) {
@@ -126,11 +174,27 @@ void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
     scenario.cloth.frame = read_frame(mesh);
     mesh.finish();
   }
-  scenario.areal_density = cloth.number("density", positive(" (kg/m^2)"));
-  JsonObjectReader springs = cloth.object("springs");
-  scenario.springs.structural = read_spring_kind(springs, "structural");
-  scenario.springs.shear = read_spring_kind(springs, "shear");
-  scenario.springs.bending = read_spring_kind(springs, "bending");
+  const bool from_material = cloth.has("material");
+  if (from_material) {
+    if (cloth.has("density")) {
+      cloth.fail("density",
+                 "no \"density\" beside \"material\": give the material's density (kg/m^3) in "
+                 "\"material\"");
+    }
+    scenario.springs.material = read_material(cloth.object("material"), scenario.cloth.grid);
+    scenario.areal_density = scenario.springs.material->areal_density_kg_per_m2();
+  } else {
+    scenario.areal_density = cloth.number("density", positive(" (kg/m^2)"));
+  }
+  // with a material, "springs" only switches kinds off or sets their damping
+  static const nlohmann::json no_springs = nlohmann::json::object();
+  JsonObjectReader springs =
+      from_material && !cloth.has("springs")
+          ? object_reader(no_springs, cloth.file(), cloth.key_path("springs"))
+          : cloth.object("springs");
+  scenario.springs.structural = read_spring_kind(springs, "structural", from_material);
+  scenario.springs.shear = read_spring_kind(springs, "shear", from_material);
+  scenario.springs.bending = read_spring_kind(springs, "bending", from_material);
   if (!scenario.springs.structural.enabled) {
     springs.fail("structural",
                  "structural springs: a cloth without them has no in-plane stiffness");

@@ -75,6 +75,12 @@ struct Scenario {
   TearingSettings tearing;
   OutputOptions output;
   RenderSettings render;
+
+  /// Whether the run bisects triangles (adaptive refinement, or refinement around crack tips):
+  /// quads are then cut into triangles before it starts.
+  bool refines_cloth() const {
+    return adaptive.enabled || (tearing.enabled && tearing.options.tip_min_edge_length_m > 0.0);
+  }
 };
 
 /// Reads, validates and returns the scenario in `file`. Each "key.path=value" of `overrides` is

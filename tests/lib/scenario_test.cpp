@@ -354,5 +354,62 @@ TEST(Scenario, BadObstaclesAreNamed) {
               HasSubstr("obstacles[0].normal: expected"));
 }
 
+const char* const with_material = R"({
+  "cloth": {
+    "grid": { "size": [1.0, 0.5], "resolution": [4, 2] },
+    "material": { "E": 5e5, "nu": 0.3, "thickness": 5e-4, "density": 200,
+                  "formulation": "delingette2008" }
+  },
+  "simulation": { "frames": 3 }
+})";
+
+TEST(Scenario, ReadsAMaterialAndTurnsItsDensityIntoAnArealDensity) {
+  const Scenario s = parse_scenario(with_material, "dir/s.json");
+  ASSERT_TRUE(s.springs.material.has_value());
+  EXPECT_EQ(s.springs.material->youngs_modulus_pa, 5e5);
+  EXPECT_EQ(s.springs.material->poisson_ratio, 0.3);
+  EXPECT_EQ(s.springs.material->formulation, StiffnessFormulation::delingette2008);
+  EXPECT_DOUBLE_EQ(s.areal_density, 0.1);  // 200 kg/m^3 x 0.5 mm
+  // without "springs", every kind is on, undamped
+  EXPECT_TRUE(s.springs.structural.enabled && s.springs.shear.enabled && s.springs.bending.enabled);
+  EXPECT_EQ(s.springs.structural.damping, 0.0);
+  const Scenario damped = parse_scenario(
+      with_material, "dir/s.json",
+      {R"(cloth.springs={"bending": {"enabled": false}, "structural": {"damping": 0.1}})"});
+  EXPECT_FALSE(damped.springs.bending.enabled);
+  EXPECT_EQ(damped.springs.structural.damping, 0.1);
+  EXPECT_EQ(
+      parse_scenario(with_material, "s.json",
+                     {"cloth.material.formulation=natsupakpong2010", "cloth.grid.cells=quads"})
+          .springs.material->formulation,
+      StiffnessFormulation::natsupakpong2010);
+}
+
+TEST(Scenario, MaterialMistakesAreNamed) {
+  EXPECT_EQ(error_of(with_material, {"cloth.material.nu=0.6"}),
+            "dir/s.json: cloth.material.nu: expected a Poisson ratio in (-1, 0.5) for formulation "
+            "\"delingette2008\": it is a St Venant-Kirchhoff membrane of an isotropic solid, "
+            "-1 < nu < 0.5, got 0.6");
+  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=lloyd2007"}),
+              HasSubstr("cloth.material.nu: expected a Poisson ratio of 1/3 for formulation "
+                        "\"lloyd2007\""));
+  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=baudet2009"}),
+              HasSubstr("cloth.material.formulation: expected a formulation defined on the "
+                        "grid's triangles (cloth.grid.cells): \"baudet2009\" is defined on "
+                        "rectangles"));
+  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=hooke"}),
+              HasSubstr("cloth.material.formulation: expected one of"));
+  EXPECT_THAT(error_of(with_material, {"cloth.material.E=-1"}),
+              HasSubstr("cloth.material.E: expected a positive number"));
+  EXPECT_THAT(error_of(with_material, {"cloth.density=0.2"}),
+              HasSubstr("cloth.density: expected no \"density\" beside \"material\""));
+  EXPECT_THAT(error_of(with_material, {R"(cloth.springs={"shear": {"stiffness": 3}})"}),
+              HasSubstr("cloth.springs.shear.stiffness: expected no stiffness: with \"material\""));
+  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=baudet2009",
+                                       "cloth.grid.cells=quads", "adaptive={\"strain\": 0.1}"}),
+              HasSubstr("cloth.material.formulation: expected a formulation defined on triangles, "
+                        "as refinement"));
+}
+
 }  // namespace
 }  // namespace tissu

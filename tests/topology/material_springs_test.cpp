@@ -1,0 +1,161 @@
+// Springs from a material through the cloth complex: each edge gets the shares of its faces, the
+// cells a formulation does not define are refused, and after refinement, coarsening and tearing
+// every spring is what a fresh assignment gives, so a refined region has the coarse one's material.
+
+#include <gtest/gtest.h>
+
+#include <tuple>
+#include <vector>
+
+#include "cloth_test_support.hpp"
+#include "topology/coarsen.hpp"
+#include "topology/compile.hpp"
+#include "topology/membrane_stiffness.hpp"
+#include "topology/refine.hpp"
+#include "topology/tear.hpp"
+
+namespace tissu {
+namespace {
+
+SpringSettings material_springs(StiffnessFormulation formulation, double nu) {
+  SpringSettings s;
+  s.structural = {true, 0.0, 0.5};
+  s.shear = {true, 0.0, 0.2};
+  s.bending = {true, 0.0, 0.01};
+  Material m;
+  m.youngs_modulus_pa = 1e6;
+  m.poisson_ratio = nu;
+  m.thickness_m = 1e-3;
+  m.density_kg_per_m3 = 200.0;
+  m.formulation = formulation;
+  s.material = m;
+  return s;
+}
+
+/// 4 x 4 cells of 0.25 m in the xz plane, each split along the same diagonal: right isosceles
+/// triangles.
+GridOptions unit_grid(GridCells cells) {
+  GridOptions o;
+  o.width = 1.0;
+  o.height = 1.0;
+  o.cells_u = 4;
+  o.cells_v = 4;
+  o.cells = cells;
+  o.diagonal = DiagonalPattern::forward;
+  return o;
+}
+
+using DartStiffness = std::tuple<double, double, double>;  // edge, bending, shear (N/m)
+
+std::vector<DartStiffness> dart_stiffnesses(ClothComplex& lcc) {
+  std::vector<DartStiffness> out;
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    const DartMechanics& m = lcc.info(d);
+    out.emplace_back(m.edge.stiffness, m.bending.stiffness, m.shear.stiffness);
+  }
+  return out;
+}
+
+/// Every dart's springs equal what assign_springs() gives from scratch.
+void expect_springs_as_assigned_from_scratch(ClothComplex& lcc, const SpringSettings& settings,
+                                             const std::string& when) {
+  const std::vector<DartStiffness> kept = dart_stiffnesses(lcc);
+  assign_springs(lcc, settings);
+  const std::vector<DartStiffness> fresh = dart_stiffnesses(lcc);
+  ASSERT_EQ(kept.size(), fresh.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < kept.size(); ++i) differ += kept[i] != fresh[i];
+  EXPECT_EQ(differ, 0) << when << ": darts whose springs differ from a fresh assignment";
+}
+
+TEST(MaterialSprings, InteriorEdgesGetBothTrianglesShareAndBorderEdgesOne) {
+  const SpringSettings settings = material_springs(StiffnessFormulation::delingette2008, 0.3);
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(unit_grid(GridCells::triangles)), 0.2, settings, lcc);
+  const CompiledCloth compiled = compile(lcc);
+  const SpringModel& model = compiled.model;
+  // per triangle: legs E h (3 - nu) / (4 (1 - nu^2)), hypotenuse E h / (2 (1 + nu)) (hand values
+  // in membrane_stiffness_test), whatever the 0.25 m size
+  const double leg = 741.758241758, hypotenuse = 384.615384615;
+  int legs_inside = 0, legs_on_border = 0, hypotenuses = 0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (model.kind[s] != SpringKind::structural) continue;
+    const bool on_border = lcc.is_free<2>(compiled.spring_darts[s]);
+    if (model.rest_length[s] > 0.3) {
+      EXPECT_NEAR(model.stiffness[s], 2 * hypotenuse, 1e-6);
+      ++hypotenuses;
+    } else if (on_border) {
+      EXPECT_NEAR(model.stiffness[s], leg, 1e-6);
+      ++legs_on_border;
+    } else {
+      EXPECT_NEAR(model.stiffness[s], 2 * leg, 1e-6);
+      ++legs_inside;
+    }
+  }
+  EXPECT_EQ(hypotenuses, 16);
+  EXPECT_EQ(legs_on_border, 16);
+  EXPECT_EQ(legs_inside, 24);
+}
+
+TEST(MaterialSprings, QuadFormulationsSetTheDiagonals) {
+  const SpringSettings settings = material_springs(StiffnessFormulation::baudet2009, 0.3);
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(unit_grid(GridCells::quads)), 0.2, settings, lcc);
+  const RectangleStiffness share = rectangle_stiffness(*settings.material, 0.25, 0.25);
+  const SpringModel& model = compile(lcc).model;
+  int diagonals = 0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (model.kind[s] != SpringKind::shear) continue;
+    EXPECT_NEAR(model.stiffness[s], share.diagonal_n_per_m, 1e-9);
+    ++diagonals;
+  }
+  EXPECT_EQ(diagonals, 32);
+}
+
+TEST(MaterialSprings, ACellTheFormulationDoesNotDefineIsRefusedByName) {
+  ClothComplex lcc;
+  try {
+    build_cloth_complex(make_grid_mesh(unit_grid(GridCells::quads)), 0.2,
+                        material_springs(StiffnessFormulation::delingette2008, 0.3), lcc);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("\"delingette2008\" is defined on triangles"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("has 4 corners"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(build_cloth_complex(make_grid_mesh(unit_grid(GridCells::triangles)), 0.2,
+                                   material_springs(StiffnessFormulation::baudet2009, 0.3), lcc),
+               std::invalid_argument);
+}
+
+TEST(MaterialSprings, RefiningCoarseningAndTearingKeepEverySpringAsAFreshAssignmentGivesIt) {
+  for (const StiffnessFormulation formulation :
+       {StiffnessFormulation::delingette2008, StiffnessFormulation::van_gelder1998}) {
+    const SpringSettings settings = material_springs(formulation, 1.0 / 3);
+    const std::string name(to_string(formulation));
+    GridOptions options = unit_grid(GridCells::triangles);
+    options.cells_u = options.cells_v = 8;
+    options.diagonal = DiagonalPattern::alternating;
+    ClothComplex lcc;
+    build_cloth_complex(make_grid_mesh(options), 0.2, settings, lcc);
+    const double mass_kg = 0.2;
+
+    ASSERT_GT(
+        refine_around_vertex(lcc, nearest_vertex(lcc, {0.5, 0.0, 0.5}), 0.03, 10000, settings), 0);
+    test::expect_valid_with_mass(lcc, mass_kg, name + " after refinement");
+    expect_springs_as_assigned_from_scratch(lcc, settings, name + " after refinement");
+
+    RefinementOptions flat;  // no criterion over threshold: every split may be undone
+    ASSERT_GT(coarsen(lcc, flat, 0.5, settings).merges, 0);
+    test::expect_valid_with_mass(lcc, mass_kg, name + " after coarsening");
+    expect_springs_as_assigned_from_scratch(lcc, settings, name + " after coarsening");
+
+    ASSERT_GT(cut_along(lcc, {{0.25, 0.0, 0.5}, {0.75, 0.0, 0.5}}, settings).tears, 0);
+    test::expect_valid_with_mass(lcc, mass_kg, name + " after tearing");
+    expect_springs_as_assigned_from_scratch(lcc, settings, name + " after tearing");
+  }
+}
+
+}  // namespace
+}  // namespace tissu
