@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "apps/material_test_command.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
 
@@ -21,6 +22,14 @@ int main(int argc, char** argv) {
       app.add_subcommand("render", "re-render a folder of saved frame meshes, without simulating");
   tissu::add_render_options(*render_app, render);
 
+  tissu::MaterialTestCommand material_test;
+  CLI::App* material_test_app = app.add_subcommand(
+      "material-test",
+      "measure E, nu and G of every stiffness formulation on test sheets (docs/materials.md)");
+  tissu::add_material_test_options(*material_test_app, material_test);
+
   CLI11_PARSE(app, argc, argv);
-  return run_app->parsed() ? tissu::execute(run) : tissu::execute(render);
+  if (run_app->parsed()) return tissu::execute(run);
+  if (material_test_app->parsed()) return tissu::execute(material_test);
+  return tissu::execute(render);
 }

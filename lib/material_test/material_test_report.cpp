@@ -1,0 +1,196 @@
+#include "lib/material_test/material_test_report.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "lib/render/external_program.hpp"
+
+namespace tissu {
+namespace {
+
+bool defines(StiffnessFormulation formulation, TestSheet sheet) {
+  const FormulationCells cells = formulation_cells(formulation);
+  return cells == FormulationCells::triangles_and_rectangles ||
+         has_quads(sheet) == (cells == FormulationCells::rectangles);
+}
+
+double target_shear_modulus_pa(double e_pa, double nu) {
+  return e_pa / (2.0 * (1.0 + nu));
+}
+
+std::ofstream open_for_writing(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  out.precision(6);
+  return out;
+}
+
+std::string percent(double measured, double target) {
+  std::ostringstream out;
+  out.precision(3);
+  out << std::showpos << 100.0 * (measured / target - 1.0) << " %";
+  return out.str();
+}
+
+std::string fixed(double value, int digits) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+std::string series_name(const MaterialTestRow& row) {
+  return std::string(to_string(row.formulation)) + ", " + std::string(to_string(row.sheet));
+}
+
+}  // namespace
+
+std::vector<MaterialTestRow> run_material_tests(const MaterialTestOptions& options) {
+  std::vector<MaterialTestRow> rows;
+  for (int f = 0; f < stiffness_formulation_count; ++f) {
+    const auto formulation = static_cast<StiffnessFormulation>(f);
+    for (int s = 0; s < test_sheet_count; ++s) {
+      const auto sheet = static_cast<TestSheet>(s);
+      if (!defines(formulation, sheet)) continue;
+      for (const double nu : options.poisson_ratios) {
+        MaterialTestRow row;
+        row.formulation = formulation;
+        row.sheet = sheet;
+        row.cells = options.cells;
+        row.target_nu = nu;
+        row.refused = !supported_poisson_ratios(formulation).contains(nu);
+        if (!row.refused) {
+          SpringSettings springs;
+          springs.structural.enabled = springs.shear.enabled = true;
+          springs.material = Material{options.youngs_modulus_pa, nu, options.thickness_m,
+                                      options.density_kg_per_m3, formulation};
+          ClothComplex lcc;
+          build_test_sheet(sheet, options.cells, springs, lcc);
+          row.measured = measure_effective_material(lcc, options.thickness_m);
+        }
+        rows.push_back(row);
+      }
+    }
+  }
+  return rows;
+}
+
+void write_material_tables(const std::vector<MaterialTestRow>& rows,
+                           const MaterialTestOptions& options, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  const double e = options.youngs_modulus_pa;
+  std::ofstream csv = open_for_writing(dir / "material_test.csv");
+  csv << "formulation,sheet,cells,target_E_pa,target_nu,target_G_pa,E_warp_pa,E_weft_pa,"
+         "E_diagonal_pa,nu_warp,nu_weft,nu_diagonal,G_pa,E_warp_error,E_diagonal_error,"
+         "nu_warp_error,G_error\n";
+  for (const MaterialTestRow& r : rows) {
+    const double g = target_shear_modulus_pa(e, r.target_nu);
+    csv << to_string(r.formulation) << ',' << to_string(r.sheet) << ',' << r.cells << ',' << e
+        << ',' << r.target_nu << ',' << g;
+    if (r.refused) {
+      csv << ",refused,,,,,,,,,,\n";
+      continue;
+    }
+    const EffectiveMaterial& m = r.measured;
+    csv << ',' << m.e_warp_pa << ',' << m.e_weft_pa << ',' << m.e_diagonal_pa << ',' << m.nu_warp
+        << ',' << m.nu_weft << ',' << m.nu_diagonal << ',' << m.shear_modulus_pa << ','
+        << m.e_warp_pa / e - 1 << ',' << m.e_diagonal_pa / e - 1 << ',' << m.nu_warp - r.target_nu
+        << ',' << m.shear_modulus_pa / g - 1 << '\n';
+  }
+
+  std::ofstream md = open_for_writing(dir / "material_test.md");
+  md << "Target E = " << e << " Pa, thickness " << options.thickness_m << " m, " << options.cells
+     << " cells a side. Errors are relative for E and G, absolute for nu.\n\n";
+  md << "| formulation | sheet | target nu | E warp | E weft | E diagonal | nu warp | nu weft | "
+        "nu diagonal | G |\n";
+  md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  std::map<std::string, std::string> refusals;  // formulation -> the target nu it refused
+  for (const MaterialTestRow& r : rows) {
+    if (r.refused) {
+      std::string& refused = refusals[std::string(to_string(r.formulation))];
+      const std::string nu = fixed(r.target_nu, 3);
+      if (refused.find(nu) == std::string::npos) refused += (refused.empty() ? "" : ", ") + nu;
+      continue;
+    }
+    md << "| " << to_string(r.formulation) << " | " << to_string(r.sheet) << " | "
+       << fixed(r.target_nu, 3) << " | ";
+    const EffectiveMaterial& m = r.measured;
+    const double g = target_shear_modulus_pa(e, r.target_nu);
+    md << percent(m.e_warp_pa, e) << " | " << percent(m.e_weft_pa, e) << " | "
+       << percent(m.e_diagonal_pa, e) << " | " << fixed(m.nu_warp, 3) << " | "
+       << fixed(m.nu_weft, 3) << " | " << fixed(m.nu_diagonal, 3) << " | "
+       << percent(m.shear_modulus_pa, g) << " |\n";
+  }
+  for (const auto& [formulation, refused] : refusals) {
+    md << "\n"
+       << formulation << " refuses target nu " << refused << ": it accepts nu "
+       << describe(supported_poisson_ratios(*stiffness_formulation_from_string(formulation)))
+       << ".";
+  }
+  md << "\n";
+}
+
+std::string plot_material_tests(const std::vector<MaterialTestRow>& rows,
+                                const MaterialTestOptions& options,
+                                const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path script = dir / "material_test.gp";
+  {
+    std::ofstream gp = open_for_writing(script);
+    // one data block per formulation and sheet: target nu, nu warp, E warp / E,
+    // E diagonal / E, G / G target
+    std::map<std::string, std::ostringstream> blocks;
+    std::vector<std::string> order;
+    std::vector<std::string> styles;  // colour by formulation, point and dash by sheet
+    for (const MaterialTestRow& r : rows) {
+      if (r.refused) continue;
+      const std::string name = series_name(r);
+      if (!blocks.count(name)) {
+        order.push_back(name);
+        const int sheet = static_cast<int>(r.sheet);
+        styles.push_back("lc " + std::to_string(static_cast<int>(r.formulation) + 1) + " pt " +
+                         std::to_string(sheet + 4) + " dt " + std::to_string(sheet + 1));
+      }
+      const double e = options.youngs_modulus_pa;
+      blocks[name] << r.target_nu << ' ' << r.measured.nu_warp << ' ' << r.measured.e_warp_pa / e
+                   << ' ' << r.measured.e_diagonal_pa / e << ' '
+                   << r.measured.shear_modulus_pa / target_shear_modulus_pa(e, r.target_nu) << '\n';
+    }
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      gp << "$s" << i << " << EOD\n" << blocks[order[i]].str() << "EOD\n";
+    }
+    gp << "set terminal pngcairo noenhanced size 1500,1000 font 'sans,11'\n"
+       << "set output '" << (dir / "material_test.png").string() << "'\n"
+       << "set multiplot layout 2,2 margins 0.05,0.74,0.07,0.92 spacing 0.07,0.1 title "
+       << "'Measured against target: " << options.cells
+       << " cells a side, E = " << options.youngs_modulus_pa << " Pa, h = " << options.thickness_m
+       << " m'\n"
+       << "set grid\nset xlabel 'target Poisson ratio'\nset xrange [-0.02:0.47]\n"
+       << "set xtics 0.1\nset key at screen 0.99,0.9 right top font 'sans,10'\n";
+    const auto panel = [&](const std::string& title, int column, const std::string& reference) {
+      gp << "set title \"" << title << "\"\nplot " << reference
+         << " lw 2 lc 'black' title 'target'";
+      for (std::size_t i = 0; i < order.size(); ++i) {
+        gp << ", $s" << i << " using 1:" << column << " with linespoints " << styles[i]
+           << " title \"" << order[i] << "\"";
+      }
+      gp << "\nunset key\n";  // one key, beside the first panel
+    };
+    panel("Poisson ratio under stress along the warp (x)", 2, "x");
+    panel("Young's modulus along the warp / target", 3, "1");
+    panel("Young's modulus along the diagonal / target", 4, "1");
+    panel("shear modulus / target E / (2 (1 + nu))", 5, "1");
+    gp << "unset multiplot\n";
+  }
+  const std::optional<std::filesystem::path> gnuplot = find_on_path("gnuplot");
+  if (!gnuplot) return "no gnuplot on the PATH: " + script.string() + " written, no PNG";
+  const ProgramResult result = run_program(*gnuplot, {script.string()});
+  if (result.status != 0) return "gnuplot failed: " + last_output(result.errors);
+  return "";
+}
+
+}  // namespace tissu
