@@ -1,5 +1,6 @@
 #include "solver/energy.hpp"
 
+#include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 
 namespace tissu {
@@ -22,6 +23,7 @@ double potential_energy(const SpringModel& model, const Eigen::Vector3d& gravity
                             state.x.segment<3>(3 * model.springs(s, 1)), model.stiffness[s],
                             model.rest_length[s]);
   }
+  energy += spring_coupling_energy(model, state.x);
   for (int p = 0; p < model.particle_count(); ++p) {
     energy -= model.mass[p] * gravity.dot(state.x.segment<3>(3 * p));
   }

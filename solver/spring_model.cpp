@@ -49,6 +49,19 @@ void check_values(const SpringModel& model) {
            "stiffness or damping");
     }
   }
+  if (model.coupling_stiffness.size() != model.couplings.rows()) {
+    fail("coupling_stiffness must have #C = " + std::to_string(model.couplings.rows()) +
+         " entries");
+  }
+  for (Eigen::Index c = 0; c < model.couplings.rows(); ++c) {
+    const int a = model.couplings(c, 0), b = model.couplings(c, 1);
+    if (a < 0 || b < 0 || a >= model.spring_count() || b >= model.spring_count() || a == b ||
+        !std::isfinite(model.coupling_stiffness[c])) {
+      fail("coupling " + std::to_string(c) + " joins springs " + std::to_string(a) + " and " +
+           std::to_string(b) + " with stiffness " + std::to_string(model.coupling_stiffness[c]) +
+           ", expected two distinct spring ids and a finite stiffness");
+    }
+  }
   for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
     for (int c = 0; c < 3; ++c) {
       const int p = model.triangles(t, c);
@@ -58,6 +71,60 @@ void check_values(const SpringModel& model) {
       }
     }
   }
+}
+
+/// Counting sort of (row, id) pairs into compressed rows, ids ascending within a row when the
+/// pairs come by ascending id.
+void compress_rows(int rows, const std::vector<std::pair<int, int>>& entries,
+                   std::vector<int>& offsets, std::vector<int>& ids) {
+  offsets.assign(rows + 1, 0);
+  for (const auto& [row, id] : entries) ++offsets[row + 1];
+  for (int r = 0; r < rows; ++r) offsets[r + 1] += offsets[r];
+  ids.assign(entries.size(), 0);
+  std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
+  for (const auto& [row, id] : entries) ids[cursor[row]++] = id;
+}
+
+bool joined_by_a_spring(const SpringModel& model, int p, int q) {
+  const ParticleSpringIncidence& incidence = model.incidence;
+  for (int e = incidence.offsets[p]; e < incidence.offsets[p + 1]; ++e) {
+    const int s = incidence.springs[e];
+    if (model.springs(s, incidence.first_end[e] ? 1 : 0) == q) return true;
+  }
+  return false;
+}
+
+void build_coupling_incidence(SpringModel& model) {
+  std::vector<std::pair<int, int>> by_spring, by_particle;
+  for (int c = 0; c < static_cast<int>(model.couplings.rows()); ++c) {
+    // the Jacobian's cross blocks join the ends of the two springs: they need a spring there
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        const int p = model.springs(model.couplings(c, 0), i);
+        const int q = model.springs(model.couplings(c, 1), j);
+        if (p != q && !joined_by_a_spring(model, p, q)) {
+          fail("coupling " + std::to_string(c) + " joins springs whose ends " + std::to_string(p) +
+               " and " + std::to_string(q) + " share no spring, expected two edges of a triangle");
+        }
+      }
+    }
+    int ends[4];
+    for (int k = 0; k < 2; ++k) {
+      const int spring = model.couplings(c, k);
+      by_spring.emplace_back(spring, c);
+      ends[2 * k] = model.springs(spring, 0);
+      ends[2 * k + 1] = model.springs(spring, 1);
+    }
+    std::sort(ends, ends + 4);
+    for (int k = 0; k < 4; ++k) {
+      if (k == 0 || ends[k] != ends[k - 1]) by_particle.emplace_back(ends[k], c);
+    }
+  }
+  SpringCouplingIncidence& incidence = model.coupling_incidence;
+  compress_rows(model.spring_count(), by_spring, incidence.spring_offsets,
+                incidence.spring_couplings);
+  compress_rows(model.particle_count(), by_particle, incidence.particle_offsets,
+                incidence.particle_couplings);
 }
 
 /// The edges of the triangles, each once as (i < j), sorted.
@@ -108,6 +175,7 @@ void finalize_model(SpringModel& model) {
       incidence.first_end[entry] = end == 0 ? 1 : 0;
     }
   }
+  build_coupling_incidence(model);
 }
 
 }  // namespace tissu

@@ -21,16 +21,33 @@ struct ParticleSpringIncidence {
   std::vector<std::int8_t> first_end;  ///< #incidences, 1 if the particle is springs(s,0), else 0
 };
 
+/// Compressed rows of the spring -> coupling and particle -> coupling incidences, for
+/// deterministic gathers: the couplings of spring s are spring_couplings[spring_offsets[s],
+/// spring_offsets[s+1]), those touching particle p (an end of either of their springs)
+/// particle_couplings[particle_offsets[p], particle_offsets[p+1]); ascending within a row.
+struct SpringCouplingIncidence {
+  std::vector<int> spring_offsets;      ///< #S+1
+  std::vector<int> spring_couplings;    ///< 2#C
+  std::vector<int> particle_offsets;    ///< #P+1
+  std::vector<int> particle_couplings;  ///< one entry per distinct particle of each coupling
+};
+
 /// Particles, springs and surface triangles of one cloth, ready to be stepped.
 struct SpringModel {
-  Eigen::VectorXd mass;               ///< #P lumped particle masses (kg)
-  Eigen::VectorXd inverse_mass;       ///< #P 1/mass, 0 for pinned particles (1/kg)
-  std::vector<std::uint8_t> pinned;   ///< #P 1 if the particle's motion is prescribed
-  Eigen::MatrixX2i springs;           ///< #S x 2 particle ids (i, j)
-  Eigen::VectorXd rest_length;        ///< #S rest lengths l0 (m)
-  Eigen::VectorXd stiffness;          ///< #S stiffnesses k (N/m)
-  Eigen::VectorXd damping;            ///< #S viscous coefficients nu (N s/m)
-  std::vector<SpringKind> kind;       ///< #S
+  Eigen::VectorXd mass;              ///< #P lumped particle masses (kg)
+  Eigen::VectorXd inverse_mass;      ///< #P 1/mass, 0 for pinned particles (1/kg)
+  std::vector<std::uint8_t> pinned;  ///< #P 1 if the particle's motion is prescribed
+  Eigen::MatrixX2i springs;          ///< #S x 2 particle ids (i, j)
+  Eigen::VectorXd rest_length;       ///< #S rest lengths l0 (m)
+  Eigen::VectorXd stiffness;         ///< #S stiffnesses k (N/m)
+  Eigen::VectorXd damping;           ///< #S viscous coefficients nu (N s/m)
+  std::vector<SpringKind> kind;      ///< #S
+  /// Pairs of springs whose stretches are coupled, with energy
+  /// Gamma_c (|x_a| - l0_a)(|x_b| - l0_b) for springs a, b = couplings.row(c): the angular terms
+  /// of Delingette 2008's triangular springs (topology/membrane_stiffness.hpp). Often empty.
+  Eigen::MatrixX2i couplings;                  ///< #C x 2 spring ids (a, b), a != b
+  Eigen::VectorXd coupling_stiffness;          ///< #C Gamma (N/m), of either sign
+  SpringCouplingIncidence coupling_incidence;  ///< filled by finalize_model()
   Eigen::MatrixX3i triangles;         ///< #T x 3 particle ids of the surface, quads split in two,
                                       ///< counter-clockwise seen from the front; for aerodynamics
   ParticleSpringIncidence incidence;  ///< filled by finalize_model()
@@ -41,7 +58,8 @@ struct SpringModel {
   int spring_count() const { return static_cast<int>(springs.rows()); }
 };
 
-/// Fills the derived fields (inverse_mass, incidence) from the others. Call after filling a model.
+/// Fills the derived fields (inverse_mass, incidence, coupling_incidence, surface_edges) from the
+/// others. Call after filling a model.
 void finalize_model(SpringModel& model);
 
 /// Dynamic state: positions and velocities of every particle, xyz interleaved.

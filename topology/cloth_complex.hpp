@@ -33,6 +33,9 @@ struct DartMechanics {
   DartSpring bending;  ///< spring across the dart's edge, between the vertices that follow the
                        ///< edge in its two faces (the hinge's apices for triangles)
   DartSpring shear;    ///< quads only: diagonal from the dart's origin to the opposite corner
+  /// Coupling Gamma (N/m) between the stretches of this dart's structural spring and the next
+  /// dart's in the face (energy Gamma dl dl', Delingette 2008's angular term); 0 for none.
+  double edge_coupling = 0.0;
 };
 
 /// The particle carried by a vertex; the vertex point is its current position (m).

@@ -35,6 +35,7 @@ Eigen::Vector3d rest_vector(const ClothComplex& lcc, Dart_const_handle dart) {
 struct FaceShare {
   double edge_n_per_m = 0.0;
   double diagonal_n_per_m = 0.0;
+  double coupling_with_next_n_per_m = 0.0;  ///< with the next dart's edge (triangles)
 };
 
 [[noreturn]] void refuse_face(const ClothComplex& lcc, Dart_const_handle dart,
@@ -57,7 +58,8 @@ FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
     const TriangleStiffness share =
         triangle_stiffness(material, {edge_rest_length_m(lcc, dart), edge_rest_length_m(lcc, next),
                                       edge_rest_length_m(lcc, after)});
-    return {share.edge_n_per_m[0], 0.0};
+    // edges 0 and 1 (this dart's and the next one's) are coupled by coupling 2
+    return {share.edge_n_per_m[0], 0.0, share.coupling_n_per_m[2]};
   }
   if (corners == 4 && cells != FormulationCells::triangles) {
     // sides averaged over opposite edges: exact for rectangles, the paper's element
@@ -129,6 +131,8 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
     }
   }
   mechanics.edge = make_spring(settings.structural, edge_stiffness, edge_rest_length_m(lcc, d));
+  mechanics.edge_coupling =
+      material ? face_share_of_edge(lcc, d, *material).coupling_with_next_n_per_m : 0.0;
 
   mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {

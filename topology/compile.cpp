@@ -1,5 +1,7 @@
 #include "topology/compile.hpp"
 
+#include <map>
+
 namespace tissu {
 namespace {
 
@@ -38,6 +40,35 @@ std::vector<SpringRecord> collect_springs(ClothComplex& lcc) {
     }
   }
   return records;
+}
+
+/// The couplings of every dart between its structural spring and the next dart's, as spring ids.
+void collect_couplings(ClothComplex& lcc, const std::vector<SpringRecord>& records,
+                       SpringModel& model) {
+  std::map<Dart_const_handle, int> edge_spring;  // both darts of each structural spring
+  for (std::size_t s = 0; s < records.size(); ++s) {
+    if (records[s].kind != SpringKind::structural) continue;
+    edge_spring[records[s].dart] = static_cast<int>(s);
+    if (!lcc.is_free<2>(records[s].dart)) {
+      edge_spring[lcc.opposite<2>(records[s].dart)] = static_cast<int>(s);
+    }
+  }
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<double> stiffness;
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    const double gamma = lcc.info(d).edge_coupling;
+    if (gamma == 0.0) continue;
+    const auto a = edge_spring.find(d), b = edge_spring.find(lcc.next(d));
+    if (a == edge_spring.end() || b == edge_spring.end()) continue;  // a spring kind is off
+    pairs.emplace_back(a->second, b->second);
+    stiffness.push_back(gamma);
+  }
+  model.couplings.resize(static_cast<Eigen::Index>(pairs.size()), 2);
+  model.coupling_stiffness.resize(static_cast<Eigen::Index>(pairs.size()));
+  for (std::size_t c = 0; c < pairs.size(); ++c) {
+    model.couplings.row(static_cast<Eigen::Index>(c)) << pairs[c].first, pairs[c].second;
+    model.coupling_stiffness[static_cast<Eigen::Index>(c)] = stiffness[c];
+  }
 }
 
 Eigen::MatrixX3i collect_triangles(ClothComplex& lcc) {
@@ -97,6 +128,7 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
     model.kind[s] = r.kind;
     out.spring_darts.push_back(r.dart);
   }
+  collect_couplings(lcc, records, model);
   model.triangles = collect_triangles(lcc);
   finalize_model(model);
   return out;

@@ -177,6 +177,13 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   }
   if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"));
   if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
+  if (s.springs.material && s.solver.integrator == Integrator::projective_dynamics &&
+      s.springs.material->formulation == StiffnessFormulation::delingette2008) {
+    throw ScenarioError(name + ": simulation.integrator: expected \"implicit_euler\", "
+                        "\"symplectic_euler\" or \"position_verlet\" with formulation "
+                        "\"delingette2008\", whose couplings between the edges of a triangle "
+                        "Projective Dynamics cannot project, got \"projective_dynamics\"");
+  }
   if (s.springs.material && s.refines_cloth() &&
       formulation_cells(s.springs.material->formulation) == FormulationCells::rectangles) {
     throw ScenarioError(name +

@@ -3,6 +3,7 @@
 #include <cassert>
 
 #include "solver/forces/aerodynamic_force.hpp"
+#include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/parallel.hpp"
 
@@ -18,6 +19,10 @@ void accumulate_forces(const SpringModel& model, const Environment& environment,
          "call finalize_model() first");
   workspace.spring_forces.resize(3, springs);
   force.resize(3 * particles);
+  const bool coupled = model.couplings.rows() > 0;
+  if (coupled) {
+    spring_coupling_tensions(model, x, workspace.spring_stretch, workspace.coupling_tension);
+  }
 
 #pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
   for (int s = 0; s < springs; ++s) {
@@ -28,6 +33,10 @@ void accumulate_forces(const SpringModel& model, const Environment& environment,
     workspace.spring_forces.col(s) =
         spring_force(xi, xj, model.stiffness[s], model.rest_length[s]) +
         spring_damping_force(xi, xj, v.segment<3>(3 * i), v.segment<3>(3 * j), model.damping[s]);
+    const double length_m = (xi - xj).norm();
+    if (coupled && length_m >= spring_length_epsilon) {  // the couplings' tension T: -T u on i
+      workspace.spring_forces.col(s) -= workspace.coupling_tension[s] / length_m * (xi - xj);
+    }
   }
 
   const ParticleSpringIncidence& incidence = model.incidence;

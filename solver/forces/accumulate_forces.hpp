@@ -13,11 +13,14 @@ namespace tissu {
 /// the sizes are known. Contents are meaningless between calls.
 struct ForceWorkspace {
   Eigen::Matrix3Xd spring_forces;    ///< 3 x #S elastic + viscous force on springs(s, 0) (N)
+  Eigen::VectorXd spring_stretch;    ///< #S |d| - l0 (m), with couplings only
+  Eigen::VectorXd coupling_tension;  ///< #S tension the couplings add to each spring (N)
   Eigen::Matrix3Xd triangle_forces;  ///< 3 x #T aerodynamic force on each vertex of a triangle (N)
 };
 
 /// Total force f (3#P, N) at positions x (3#P, m), velocities v (3#P, m/s) and time t (s):
 /// f_i = sum over springs (i, j) of [ -k (|d| - l0) u - nu ((vi - vj) . u) u ]   (springs)
+///       - sum over springs (i, j) of T_s u                  (couplings, spring_coupling.hpp)
 ///       + m_i g                                                              (gravity)
 ///       - c m_i v_i                                                          (air damping)
 ///       + 1/3 sum over triangles of i of the aerodynamic force               (wind)

@@ -24,11 +24,14 @@ struct ForceJacobianWorkspace {
   SpringBlockPattern pattern;                  ///< sparsity, rebuilt only when the springs change
   std::vector<Eigen::Matrix3d> spring_blocks;  ///< #S per-spring 3x3 blocks (N/m or N s/m)
   Eigen::VectorXd diagonal;                    ///< #P per-particle diagonal term (N s/m)
+  Eigen::VectorXd spring_stretch;              ///< #S |d| - l0 (m), with couplings only
+  Eigen::VectorXd coupling_tension;            ///< #S tension the couplings add (N)
 };
 
 /// Position Jacobian df/dx (3#P x 3#P, N/m, symmetric) at positions x (3#P, m): per spring the
 /// blocks of spring_force_jacobian() (Baraff & Witkin 1998; Choi & Ko 2002),
-/// df_i/dxi = df_j/dxj = K, df_i/dxj = df_j/dxi = -K. Left out, as in Baraff & Witkin 1998: the
+/// df_i/dxi = df_j/dxj = K, df_i/dxj = df_j/dxi = -K, plus the couplings' terms
+/// (spring_coupling.hpp), clamped like the springs'. Left out, as in Baraff & Witkin 1998: the
 /// position dependence of the viscous spring force (not symmetric; zero at rest) and the
 /// aerodynamic force, which integrators treat explicitly. Gravity and air damping do not depend
 /// on x. Deterministic for any number of OpenMP threads.

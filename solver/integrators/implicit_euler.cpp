@@ -3,6 +3,7 @@
 #include <Eigen/IterativeLinearSolvers>
 
 #include "solver/forces/accumulate_forces.hpp"
+#include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/parallel.hpp"
 
@@ -28,6 +29,26 @@ void compute_spring_terms(const SpringModel& model, double h, const State& state
     workspace.spring_products.col(s) =
         dfdx * (state.v.segment<3>(3 * i) - state.v.segment<3>(3 * j));
   }
+}
+
+// the couplings' part of the same two terms (spring_coupling.hpp): the geometric stiffness of
+// their tensions per spring, and their cross term of df/dx v; their cross blocks of A are added
+// once A is assembled
+void add_coupling_terms(const SpringModel& model, double h, const State& state,
+                        const Eigen::VectorXd& coupling_tension,
+                        ImplicitEulerWorkspace& workspace) {
+  const int springs = model.spring_count();
+#pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
+  for (int s = 0; s < springs; ++s) {
+    const int i = model.springs(s, 0);
+    const int j = model.springs(s, 1);
+    const Eigen::Matrix3d dfdx = coupling_tension_jacobian(
+        state.x.segment<3>(3 * i), state.x.segment<3>(3 * j), coupling_tension[s], true);
+    workspace.spring_blocks[s] -= (h * h) * dfdx;
+    workspace.spring_products.col(s) +=
+        dfdx * (state.v.segment<3>(3 * i) - state.v.segment<3>(3 * j));
+  }
+  add_coupling_velocity_products(model, state.x, state.v, workspace.spring_products);
 }
 
 // b = S h (f0 + h df/dx v0), gathered per particle in incidence order
@@ -66,6 +87,8 @@ StepStatus implicit_euler_step(const SpringModel& model, const SolverParams& par
   accumulate_forces(model, params.environment, state.time, state.x, state.v, workspace.forces,
                     workspace.force);
   compute_spring_terms(model, h, state, implicit);
+  const bool coupled = model.couplings.rows() > 0;
+  if (coupled) add_coupling_terms(model, h, state, workspace.forces.coupling_tension, implicit);
   compute_rhs(model, h, workspace.force, implicit);
   if (!implicit.rhs.allFinite()) return StepStatus::non_finite;
 
@@ -74,6 +97,10 @@ StepStatus implicit_euler_step(const SpringModel& model, const SolverParams& par
   update_spring_block_pattern(model, implicit.pattern);
   assemble_spring_block_matrix(model, implicit.pattern, implicit.spring_blocks, implicit.diagonal,
                                true, implicit.system_matrix);
+  if (coupled) {
+    add_coupling_jacobian_blocks(model, implicit.pattern, state.x, -h * h, true,
+                                 implicit.system_matrix);
+  }
 
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double, Eigen::RowMajor>,
                            Eigen::Lower | Eigen::Upper>

@@ -89,6 +89,11 @@ void pd_global_rhs(const SpringModel& model, const PdSystem& system, const Eigen
 
 StepStatus projective_dynamics_step(const SpringModel& model, const SolverParams& params,
                                     State& state, StepWorkspace& workspace) {
+  if (model.couplings.rows() > 0) {
+    throw std::invalid_argument(
+        "projective_dynamics_step: the model has spring couplings, which Projective Dynamics "
+        "cannot project; step it with implicit_euler, symplectic_euler or position_verlet");
+  }
   const double h = params.time_step;
   const ProjectiveDynamicsOptions& options = params.pd;
   const int particles = model.particle_count();

@@ -36,7 +36,9 @@ namespace tissu {
 ///   and every global iteration (p starts at x + h v = x), whatever their number: it stays at
 ///   rest to round-off, and PD with few iterations still settles on the true equilibrium.
 /// - Results are independent of the number of OpenMP threads for every global solver.
-/// Throws std::invalid_argument on options out of range (see ProjectiveDynamicsOptions).
+/// - Spring couplings (model.couplings) have no projection: a model with any is refused.
+/// Throws std::invalid_argument on options out of range (see ProjectiveDynamicsOptions) or on a
+/// model with couplings.
 /// Returns non_finite if the prediction is not finite (state unchanged), not_converged if
 /// params.pd.tolerance > 0 was not met within params.pd.iterations (state advanced anyway).
 /// Does not advance state.time (step() does).

@@ -83,11 +83,26 @@ TEST(MaterialTest, PinsWhatTheApproximateFormulationsMeasure) {
   const EffectiveMaterial baudet = measure(StiffnessFormulation::baudet2009, TestSheet::quads, 0.3);
   EXPECT_NEAR(baudet.e_warp_pa / e_pa, 0.983, 0.005);
   EXPECT_NEAR(baudet.nu_warp, 0.345, 0.005);
-  // Delingette's springs without their couplings are exact on equilateral triangles at 1/3
-  const EffectiveMaterial delingette =
-      measure(StiffnessFormulation::delingette2008, TestSheet::equilateral_triangles, 0.3);
-  EXPECT_NEAR(delingette.e_warp_pa / e_pa, 1.001, 0.005);
-  EXPECT_NEAR(delingette.nu_warp, 1.0 / 3, 0.005);
+}
+
+// Delingette 2008's springs with their couplings are the linear membrane of every triangle
+// (membrane_stiffness_test), so the sheet must be the material on every mesh and at every nu:
+// the issue asks for E within 5 % and nu within 0.05; it is exact to round-off.
+TEST(MaterialTest, Delingette2008IsTheTargetMaterialOnEveryTriangleSheet) {
+  for (const TestSheet sheet : {TestSheet::right_triangles, TestSheet::equilateral_triangles,
+                                TestSheet::refined_triangles}) {
+    for (const double nu : {0.0, 0.2, 0.3, 0.45}) {
+      const EffectiveMaterial m = measure(StiffnessFormulation::delingette2008, sheet, nu);
+      const std::string name = std::string(to_string(sheet)) + " at nu " + std::to_string(nu);
+      for (const double e : {m.e_warp_pa, m.e_weft_pa, m.e_diagonal_pa}) {
+        EXPECT_NEAR(e / e_pa, 1.0, 1e-9) << name;
+      }
+      for (const double measured_nu : {m.nu_warp, m.nu_weft, m.nu_diagonal}) {
+        EXPECT_NEAR(measured_nu, nu, 1e-9) << name;
+      }
+      EXPECT_NEAR(m.shear_modulus_pa / (e_pa / (2 * (1 + nu))), 1.0, 1e-9) << name;
+    }
+  }
 }
 
 TEST(MaterialTest, WritesEveryRowToTheTablesAndNamesRefusals) {

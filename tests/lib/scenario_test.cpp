@@ -405,6 +405,8 @@ TEST(Scenario, MaterialMistakesAreNamed) {
               HasSubstr("cloth.density: expected no \"density\" beside \"material\""));
   EXPECT_THAT(error_of(with_material, {R"(cloth.springs={"shear": {"stiffness": 3}})"}),
               HasSubstr("cloth.springs.shear.stiffness: expected no stiffness: with \"material\""));
+  EXPECT_THAT(error_of(with_material, {"simulation.integrator=projective_dynamics"}),
+              HasSubstr("simulation.integrator: expected \"implicit_euler\""));
   EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=baudet2009",
                                        "cloth.grid.cells=quads", "adaptive={\"strain\": 0.1}"}),
               HasSubstr("cloth.material.formulation: expected a formulation defined on triangles, "

@@ -45,13 +45,14 @@ GridOptions unit_grid(GridCells cells) {
   return o;
 }
 
-using DartStiffness = std::tuple<double, double, double>;  // edge, bending, shear (N/m)
+using DartStiffness = std::tuple<double, double, double, double>;  // edge, bending, shear,
+                                                                   // coupling (N/m)
 
 std::vector<DartStiffness> dart_stiffnesses(ClothComplex& lcc) {
   std::vector<DartStiffness> out;
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
     const DartMechanics& m = lcc.info(d);
-    out.emplace_back(m.edge.stiffness, m.bending.stiffness, m.shear.stiffness);
+    out.emplace_back(m.edge.stiffness, m.bending.stiffness, m.shear.stiffness, m.edge_coupling);
   }
   return out;
 }
@@ -95,6 +96,29 @@ TEST(MaterialSprings, InteriorEdgesGetBothTrianglesShareAndBorderEdgesOne) {
   EXPECT_EQ(hypotenuses, 16);
   EXPECT_EQ(legs_on_border, 16);
   EXPECT_EQ(legs_inside, 24);
+}
+
+TEST(MaterialSprings, Delingette2008CouplesTheEdgesOfEveryTriangle) {
+  const SpringSettings settings = material_springs(StiffnessFormulation::delingette2008, 0.3);
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(unit_grid(GridCells::triangles)), 0.2, settings, lcc);
+  const SpringModel& model = compile(lcc).model;
+  ASSERT_EQ(model.couplings.rows(), 3 * 32);  // three pairs of edges in each of 32 triangles
+  // the hand values of membrane_stiffness_test: two legs 357.14 N/m, a leg and the hypotenuse
+  // -271.96 N/m
+  int legs = 0, leg_and_hypotenuse = 0;
+  for (Eigen::Index c = 0; c < model.couplings.rows(); ++c) {
+    const bool hypotenuse = model.rest_length[model.couplings(c, 0)] > 0.3 ||
+                            model.rest_length[model.couplings(c, 1)] > 0.3;
+    EXPECT_NEAR(model.coupling_stiffness[c], hypotenuse ? -271.964146610 : 357.142857143, 1e-6);
+    ++(hypotenuse ? leg_and_hypotenuse : legs);
+  }
+  EXPECT_EQ(legs, 32);
+  EXPECT_EQ(leg_and_hypotenuse, 64);
+  // springs alone (van Gelder) have none
+  build_cloth_complex(make_grid_mesh(unit_grid(GridCells::triangles)), 0.2,
+                      material_springs(StiffnessFormulation::van_gelder1998, 1.0 / 3), lcc);
+  EXPECT_EQ(compile(lcc).model.couplings.rows(), 0);
 }
 
 TEST(MaterialSprings, QuadFormulationsSetTheDiagonals) {
