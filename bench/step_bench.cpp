@@ -56,6 +56,53 @@ void BM_Step(benchmark::State& bench) {
   bench.counters["threads"] = static_cast<double>(bench.range(2));
 }
 
+/// The same square from a material: E h = 1000 N/m (the raw springs' k), nu = 1/3, 0.2 kg/m^2,
+/// by van Gelder's springs alone or by Delingette's springs and couplings.
+CompiledCloth material_cloth(int particles_per_side, StiffnessFormulation formulation) {
+  GridOptions grid;
+  grid.cells_u = grid.cells_v = particles_per_side - 1;
+  SpringSettings springs;
+  springs.structural = {true, 0.0, 0.01};
+  springs.bending = {true, 0.0, 0.001};
+  springs.material = Material{2e6, 1.0 / 3.0, 5e-4, 400.0, formulation};
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(grid), springs.material->areal_density_kg_per_m2(), springs,
+                      lcc);
+  PinSelector top;
+  top.side = Side::top;
+  apply_pins(lcc, {top}, ClothFrame{});
+  return compile(lcc);
+}
+
+/// What Delingette's couplings cost an implicit Euler step, against springs alone.
+void BM_ImplicitStepMaterial(benchmark::State& bench) {
+  const auto formulation = static_cast<StiffnessFormulation>(bench.range(0));
+  omp_set_num_threads(static_cast<int>(bench.range(2)));
+  CompiledCloth cloth = material_cloth(static_cast<int>(bench.range(1)), formulation);
+  SolverParams params;
+  params.integrator = Integrator::implicit_euler;
+  params.time_step = time_step_s(Integrator::implicit_euler);
+  StepWorkspace workspace;
+  for (int n = 0; n < 20; ++n) step(cloth.model, params, cloth.state, workspace);
+  for (auto _ : bench) {
+    const StepStatus status = step(cloth.model, params, cloth.state, workspace);
+    if (status == StepStatus::non_finite) bench.SkipWithError("non-finite state");
+  }
+  bench.counters["springs"] = cloth.model.spring_count();
+  bench.counters["couplings"] = static_cast<double>(cloth.model.couplings.rows());
+  bench.counters["cg_iterations"] = workspace.implicit.cg_iterations;
+}
+
+void material_arguments(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"formulation", "side", "threads"});
+  for (const StiffnessFormulation formulation :
+       {StiffnessFormulation::van_gelder1998, StiffnessFormulation::delingette2008}) {
+    for (int side : {64, 128}) {
+      for (int threads : {1, 2}) b->Args({static_cast<int>(formulation), side, threads});
+    }
+  }
+}
+
 void step_arguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"integrator", "side", "threads"});
   for (int integrator : {0, 1, 2}) {
@@ -66,6 +113,10 @@ void step_arguments(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_Step)->Apply(step_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ImplicitStepMaterial)
+    ->Apply(material_arguments)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace tissu
