@@ -35,6 +35,17 @@ double time_step_s(Integrator integrator) {
   return integrator == Integrator::implicit_euler ? 1.0 / 300.0 : 2e-5;
 }
 
+/// Times one step per iteration, after 20 untimed ones (the cloth starts falling and the
+/// workspace is sized).
+void time_steps(benchmark::State& bench, const SolverParams& params, CompiledCloth& cloth,
+                StepWorkspace& workspace) {
+  for (int n = 0; n < 20; ++n) step(cloth.model, params, cloth.state, workspace);
+  for (auto _ : bench) {
+    const StepStatus status = step(cloth.model, params, cloth.state, workspace);
+    if (status == StepStatus::non_finite) bench.SkipWithError("non-finite state");
+  }
+}
+
 void BM_Step(benchmark::State& bench) {
   const auto integrator = static_cast<Integrator>(bench.range(0));
   const int side = static_cast<int>(bench.range(1));
@@ -45,12 +56,7 @@ void BM_Step(benchmark::State& bench) {
   params.time_step = time_step_s(integrator);
   params.environment.wind.velocity = Eigen::Vector3d(0.0, 1.0, 0.0);
   StepWorkspace workspace;
-  // warm up: the cloth starts falling and the workspace is sized
-  for (int n = 0; n < 20; ++n) step(cloth.model, params, cloth.state, workspace);
-  for (auto _ : bench) {
-    const StepStatus status = step(cloth.model, params, cloth.state, workspace);
-    if (status == StepStatus::non_finite) bench.SkipWithError("non-finite state");
-  }
+  time_steps(bench, params, cloth, workspace);
   bench.counters["particles"] = cloth.model.particle_count();
   bench.counters["springs"] = cloth.model.spring_count();
   bench.counters["threads"] = static_cast<double>(bench.range(2));
@@ -83,11 +89,7 @@ void BM_ImplicitStepMaterial(benchmark::State& bench) {
   params.integrator = Integrator::implicit_euler;
   params.time_step = time_step_s(Integrator::implicit_euler);
   StepWorkspace workspace;
-  for (int n = 0; n < 20; ++n) step(cloth.model, params, cloth.state, workspace);
-  for (auto _ : bench) {
-    const StepStatus status = step(cloth.model, params, cloth.state, workspace);
-    if (status == StepStatus::non_finite) bench.SkipWithError("non-finite state");
-  }
+  time_steps(bench, params, cloth, workspace);
   bench.counters["springs"] = cloth.model.spring_count();
   bench.counters["couplings"] = static_cast<double>(cloth.model.couplings.rows());
   bench.counters["cg_iterations"] = workspace.implicit.cg_iterations;

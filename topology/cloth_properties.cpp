@@ -67,6 +67,12 @@ FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
     const double side_b_m =
         0.5 * (edge_rest_length_m(lcc, next) + edge_rest_length_m(lcc, lcc.next(after)));
     const RectangleStiffness share = rectangle_stiffness(material, side_a_m, side_b_m);
+    if (share.side_a_n_per_m < 0.0 || share.side_b_n_per_m < 0.0) {
+      std::ostringstream sides;
+      sides << "cells whose formula gives positive stiffnesses, not " << side_a_m << " x "
+            << side_b_m << " m at nu " << material.poisson_ratio;
+      refuse_face(lcc, dart, material, sides.str());
+    }
     return {share.side_a_n_per_m, share.diagonal_n_per_m};
   }
   refuse_face(lcc, dart, material,
@@ -122,17 +128,17 @@ Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart) {
 
 void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
   const Material* material = settings.material ? &*settings.material : nullptr;
+  const FaceShare own = material ? face_share_of_edge(lcc, d, *material) : FaceShare{};
   DartMechanics& mechanics = lcc.info(d);
   double edge_stiffness = settings.structural.stiffness;
   if (material) {
-    edge_stiffness = face_share_of_edge(lcc, d, *material).edge_n_per_m;
+    edge_stiffness = own.edge_n_per_m;
     if (!lcc.is_free<2>(d)) {
       edge_stiffness += face_share_of_edge(lcc, lcc.opposite<2>(d), *material).edge_n_per_m;
     }
   }
   mechanics.edge = make_spring(settings.structural, edge_stiffness, edge_rest_length_m(lcc, d));
-  mechanics.edge_coupling =
-      material ? face_share_of_edge(lcc, d, *material).coupling_with_next_n_per_m : 0.0;
+  mechanics.edge_coupling = own.coupling_with_next_n_per_m;
 
   mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {
@@ -158,8 +164,7 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
 
   mechanics.shear = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (lcc.darts_of_orbit<1>(d).size() == 4) {
-    const double stiffness = material ? face_share_of_edge(lcc, d, *material).diagonal_n_per_m
-                                      : settings.shear.stiffness;
+    const double stiffness = material ? own.diagonal_n_per_m : settings.shear.stiffness;
     mechanics.shear = make_spring(
         settings.shear, stiffness,
         rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(lcc.next(d)))));

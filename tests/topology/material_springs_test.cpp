@@ -151,6 +151,18 @@ TEST(MaterialSprings, ACellTheFormulationDoesNotDefineIsRefusedByName) {
   EXPECT_THROW(build_cloth_complex(make_grid_mesh(unit_grid(GridCells::triangles)), 0.2,
                                    material_springs(StiffnessFormulation::baudet2009, 0.3), lcc),
                std::invalid_argument);
+  // Baudet's long sides go negative when b^2 (3 nu + 2) < a^2: 0.25 x 0.125 m cells at nu = 0
+  GridOptions long_cells = unit_grid(GridCells::quads);
+  long_cells.height = 0.5;
+  try {
+    build_cloth_complex(make_grid_mesh(long_cells), 0.2,
+                        material_springs(StiffnessFormulation::baudet2009, 0.0), lcc);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("positive stiffnesses, not 0.25 x 0.125 m at nu 0"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(MaterialSprings, RefiningCoarseningAndTearingKeepEverySpringAsAFreshAssignmentGivesIt) {
