@@ -30,4 +30,17 @@ struct EffectiveMaterial {
 /// if the network is not rigid (singular reduced system).
 EffectiveMaterial measure_effective_material(ClothComplex& lcc, double thickness_m);
 
+/// Young's modulus and Poisson ratio from a literal tensile test along x.
+struct StripTension {
+  double e_pa = 0.0;  ///< pulling force / (height x thickness) / strain (Pa)
+  double nu = 0.0;    ///< minus the mean strain across (top against bottom side) over the strain
+};
+
+/// Pulls a rectangular sheet along x at infinitesimal strain: the particles on its left and right
+/// sides (the extreme x) are held in x, 0 and the pull, and free to slide in y; one left particle
+/// is held in y; its top and bottom sides are free. The interior relaxes exactly as in
+/// measure_effective_material(). Free sides let a lattice that is not affine relax near them,
+/// which the homogenisation above does not allow: the two agree for a formulation that is exact.
+StripTension measure_strip_tension(ClothComplex& lcc, double thickness_m);
+
 }  // namespace tissu

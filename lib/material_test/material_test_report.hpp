@@ -5,6 +5,7 @@
 /// written as CSV, a markdown table and a plot.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct MaterialTestRow {
   double target_nu = 0.0;
   bool refused = false;  ///< nu outside the formulation's range: nothing measured
   EffectiveMaterial measured;
+  /// A literal pull along x with free top and bottom sides; not on the equilateral sheet, whose
+  /// left and right sides zigzag.
+  std::optional<StripTension> strip;
 };
 
 /// Runs every formulation on every sheet whose cells it defines, at every target nu. A nu the
