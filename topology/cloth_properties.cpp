@@ -54,14 +54,14 @@ FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
   const auto corners = lcc.darts_of_orbit<1>(dart).size();
   const Dart_const_handle next = lcc.next(dart);
   const Dart_const_handle after = lcc.next(next);
-  if (corners == 3 && cells != FormulationCells::rectangles) {
+  if (corners == 3 && formulation_defines(material.formulation, 3)) {
     const TriangleStiffness share =
         triangle_stiffness(material, {edge_rest_length_m(lcc, dart), edge_rest_length_m(lcc, next),
                                       edge_rest_length_m(lcc, after)});
     // edges 0 and 1 (this dart's and the next one's) are coupled by coupling 2
     return {share.edge_n_per_m[0], 0.0, share.coupling_n_per_m[2]};
   }
-  if (corners == 4 && cells != FormulationCells::triangles) {
+  if (corners == 4 && formulation_defines(material.formulation, 4)) {
     // sides averaged over opposite edges: exact for rectangles, the paper's element
     const double side_a_m = 0.5 * (edge_rest_length_m(lcc, dart) + edge_rest_length_m(lcc, after));
     const double side_b_m =

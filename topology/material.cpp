@@ -89,6 +89,12 @@ FormulationCells formulation_cells(StiffnessFormulation formulation) {
   return facts_of(formulation).cells;
 }
 
+bool formulation_defines(StiffnessFormulation formulation, int corners) {
+  const FormulationCells cells = formulation_cells(formulation);
+  return (corners == 3 && cells != FormulationCells::rectangles) ||
+         (corners == 4 && cells != FormulationCells::triangles);
+}
+
 PoissonRange supported_poisson_ratios(StiffnessFormulation formulation) {
   return facts_of(formulation).poisson;
 }

@@ -61,6 +61,9 @@ std::optional<StiffnessFormulation> stiffness_formulation_from_string(std::strin
 /// The cells the formulation's paper gives formulas for.
 FormulationCells formulation_cells(StiffnessFormulation formulation);
 
+/// Whether the formulation defines cells of `corners` corners (3: triangles, 4: rectangles).
+bool formulation_defines(StiffnessFormulation formulation, int corners);
+
 /// The Poisson ratios the formulation supports, with the reason given by supported_range_reason().
 PoissonRange supported_poisson_ratios(StiffnessFormulation formulation);
 

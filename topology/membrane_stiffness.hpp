@@ -16,7 +16,8 @@ namespace tissu {
 struct TriangleStiffness {
   std::array<double, 3> edge_n_per_m{};  ///< stiffness of the spring along edge k (N/m)
   /// Coupling between the stretches of edges k+1 and k+2: energy C (l_{k+1} - L_{k+1})
-  /// (l_{k+2} - L_{k+2}) (N/m). Only delingette2008 has it; springs alone cannot carry it.
+  /// (l_{k+2} - L_{k+2}) (N/m). Only delingette2008 has it; the solver applies it as a
+  /// SpringModel coupling (solver/forces/spring_coupling.hpp).
   std::array<double, 3> coupling_n_per_m{};
 };
 

@@ -11,12 +11,6 @@
 namespace tissu {
 namespace {
 
-bool defines(StiffnessFormulation formulation, TestSheet sheet) {
-  const FormulationCells cells = formulation_cells(formulation);
-  return cells == FormulationCells::triangles_and_rectangles ||
-         has_quads(sheet) == (cells == FormulationCells::rectangles);
-}
-
 double target_shear_modulus_pa(double e_pa, double nu) {
   return e_pa / (2.0 * (1.0 + nu));
 }
@@ -55,7 +49,7 @@ std::vector<MaterialTestRow> run_material_tests(const MaterialTestOptions& optio
     const auto formulation = static_cast<StiffnessFormulation>(f);
     for (int s = 0; s < test_sheet_count; ++s) {
       const auto sheet = static_cast<TestSheet>(s);
-      if (!defines(formulation, sheet)) continue;
+      if (!formulation_defines(formulation, has_quads(sheet) ? 4 : 3)) continue;
       for (const double nu : options.poisson_ratios) {
         MaterialTestRow row;
         row.formulation = formulation;

@@ -179,13 +179,14 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
   if (s.springs.material && s.solver.integrator == Integrator::projective_dynamics &&
       s.springs.material->formulation == StiffnessFormulation::delingette2008) {
-    throw ScenarioError(name + ": simulation.integrator: expected \"implicit_euler\", "
+    throw ScenarioError(name +
+                        ": simulation.integrator: expected \"implicit_euler\", "
                         "\"symplectic_euler\" or \"position_verlet\" with formulation "
                         "\"delingette2008\", whose couplings between the edges of a triangle "
                         "Projective Dynamics cannot project, got \"projective_dynamics\"");
   }
   if (s.springs.material && s.refines_cloth() &&
-      formulation_cells(s.springs.material->formulation) == FormulationCells::rectangles) {
+      !formulation_defines(s.springs.material->formulation, 3)) {
     throw ScenarioError(name +
                         ": cloth.material.formulation: expected a formulation defined on "
                         "triangles, as refinement (adaptive, or around crack tips) cuts the cloth "

@@ -91,15 +91,13 @@ Material read_material(JsonObjectReader material, const std::optional<GridOption
                             std::string(to_string(m.formulation)) +
                             "\": " + std::string(supported_range_reason(m.formulation)));
   }
-  const FormulationCells cells = formulation_cells(m.formulation);
-  if (grid && cells != FormulationCells::triangles_and_rectangles &&
-      (grid->cells == GridCells::quads) != (cells == FormulationCells::rectangles)) {
+  if (grid && !formulation_defines(m.formulation, grid->cells == GridCells::quads ? 4 : 3)) {
     material.fail("formulation",
                   std::string("a formulation defined on the grid's ") +
                       (grid->cells == GridCells::quads ? "quads" : "triangles") +
                       " (cloth.grid.cells): \"" + std::string(to_string(m.formulation)) +
                       "\" is defined on " +
-                      (cells == FormulationCells::triangles ? "triangles" : "rectangles"));
+                      (grid->cells == GridCells::quads ? "triangles" : "rectangles"));
   }
   material.finish();
   return m;
