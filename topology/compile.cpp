@@ -45,6 +45,13 @@ std::vector<SpringRecord> collect_springs(ClothComplex& lcc) {
 /// The couplings of every dart between its structural spring and the next dart's, as spring ids.
 void collect_couplings(ClothComplex& lcc, const std::vector<SpringRecord>& records,
                        SpringModel& model) {
+  std::vector<Dart_handle> coupled;
+  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    if (lcc.info(d).edge_coupling != 0.0) coupled.push_back(d);
+  }
+  model.couplings.resize(0, 2);
+  model.coupling_stiffness.resize(0);
+  if (coupled.empty()) return;                   // springs alone: no need for the map below
   std::map<Dart_const_handle, int> edge_spring;  // both darts of each structural spring
   for (std::size_t s = 0; s < records.size(); ++s) {
     if (records[s].kind != SpringKind::structural) continue;
@@ -55,13 +62,11 @@ void collect_couplings(ClothComplex& lcc, const std::vector<SpringRecord>& recor
   }
   std::vector<std::pair<int, int>> pairs;
   std::vector<double> stiffness;
-  for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    const double gamma = lcc.info(d).edge_coupling;
-    if (gamma == 0.0) continue;
+  for (Dart_handle d : coupled) {
     const auto a = edge_spring.find(d), b = edge_spring.find(lcc.next(d));
     if (a == edge_spring.end() || b == edge_spring.end()) continue;  // a spring kind is off
     pairs.emplace_back(a->second, b->second);
-    stiffness.push_back(gamma);
+    stiffness.push_back(lcc.info(d).edge_coupling);
   }
   model.couplings.resize(static_cast<Eigen::Index>(pairs.size()), 2);
   model.coupling_stiffness.resize(static_cast<Eigen::Index>(pairs.size()));

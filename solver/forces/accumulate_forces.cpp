@@ -33,9 +33,11 @@ void accumulate_forces(const SpringModel& model, const Environment& environment,
     workspace.spring_forces.col(s) =
         spring_force(xi, xj, model.stiffness[s], model.rest_length[s]) +
         spring_damping_force(xi, xj, v.segment<3>(3 * i), v.segment<3>(3 * j), model.damping[s]);
-    const double length_m = (xi - xj).norm();
-    if (coupled && length_m >= spring_length_epsilon) {  // the couplings' tension T: -T u on i
-      workspace.spring_forces.col(s) -= workspace.coupling_tension[s] / length_m * (xi - xj);
+    if (coupled) {  // the couplings' tension T: -T u on i
+      const double length_m = (xi - xj).norm();
+      if (length_m >= spring_length_epsilon) {
+        workspace.spring_forces.col(s) -= workspace.coupling_tension[s] / length_m * (xi - xj);
+      }
     }
   }
 

@@ -124,17 +124,13 @@ void add_coupling_jacobian_blocks(const SpringModel& model, const SpringBlockPat
       const double gamma = scale * model.coupling_stiffness[c];
       for (int k = 0; k < 2; ++k) {  // p as an end of spring `mine`, paired with `theirs`
         const int mine = model.couplings(c, k), theirs = model.couplings(c, 1 - k);
-        const Eigen::Vector3d u_mine = geometry(model, x, mine).u;
-        const Eigen::Vector3d u_theirs = geometry(model, x, theirs).u;
-        for (int end = 0; end < 2; ++end) {
-          if (model.springs(mine, end) != p) continue;
-          const double sign_p = end == 0 ? 1.0 : -1.0;
-          for (int other_end = 0; other_end < 2; ++other_end) {
-            const double sign_q = other_end == 0 ? 1.0 : -1.0;
-            add(model.springs(theirs, other_end),
-                -gamma * sign_p * sign_q * u_mine * u_theirs.transpose());
-          }
-        }
+        const int end = model.springs(mine, 0) == p ? 0 : model.springs(mine, 1) == p ? 1 : -1;
+        if (end < 0) continue;
+        const double sign_p = end == 0 ? 1.0 : -1.0;
+        const Eigen::Matrix3d block =
+            -gamma * sign_p * geometry(model, x, mine).u * geometry(model, x, theirs).u.transpose();
+        add(model.springs(theirs, 0), block);
+        add(model.springs(theirs, 1), -block);
       }
     }
   }
