@@ -69,14 +69,22 @@ SpringModel grid(int n, State& state) {
 
 constexpr double time_step_s = 1.0 / 60.0;
 
+/// The grid of `side` particles a side and its PD system at time_step_s.
+struct GridSystem {
+  State state;
+  SpringModel model;
+  PdSystem system;
+  explicit GridSystem(int side) : model(grid(side, state)) {
+    update_pd_system(model, time_step_s, system);
+  }
+};
+
 void BM_GlobalSweep(benchmark::State& bench) {
   const auto solver = static_cast<PdGlobalSolver>(bench.range(0));
   const int side = static_cast<int>(bench.range(1));
   omp_set_num_threads(static_cast<int>(bench.range(2)));
-  State state;
-  const SpringModel model = grid(side, state);
-  PdSystem system;
-  update_pd_system(model, time_step_s, system);
+  GridSystem fixture(side);
+  auto& [state, model, system] = fixture;
   // right-hand side of a falling step: M/h^2 (x + h^2 g) + J d at the rest shape
   Eigen::Matrix3Xd projections;
   pd_local_step(model, state.x, state.x, projections);
@@ -104,10 +112,8 @@ void BM_GlobalSweep(benchmark::State& bench) {
 void BM_LocalStepAndRhs(benchmark::State& bench) {
   const int side = static_cast<int>(bench.range(0));
   omp_set_num_threads(static_cast<int>(bench.range(1)));
-  State state;
-  const SpringModel model = grid(side, state);
-  PdSystem system;
-  update_pd_system(model, time_step_s, system);
+  GridSystem fixture(side);
+  auto& [state, model, system] = fixture;
   Eigen::Matrix3Xd projections;
   Eigen::VectorXd rhs;
   // once untimed, so that the buffers' first-touch page faults are not timed: a run reuses them
@@ -141,10 +147,8 @@ void BM_RebuildSystem(benchmark::State& bench) {
 }
 
 void BM_ColorParticles(benchmark::State& bench) {
-  State state;
-  const SpringModel model = grid(static_cast<int>(bench.range(0)), state);
-  PdSystem system;
-  update_pd_system(model, time_step_s, system);
+  GridSystem fixture(static_cast<int>(bench.range(0)));
+  auto& [state, model, system] = fixture;
   for (auto _ : bench) {
     color_particles(system.neighbour_offsets, system.neighbours, system.coloring, system.scratch);
     benchmark::DoNotOptimize(system.coloring.color.data());
@@ -171,10 +175,8 @@ void BM_JacobiSweepPrecision(benchmark::State& bench) {
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   const int side = static_cast<int>(bench.range(0));
   omp_set_num_threads(static_cast<int>(bench.range(1)));
-  State state;
-  const SpringModel model = grid(side, state);
-  PdSystem system;
-  update_pd_system(model, time_step_s, system);
+  GridSystem fixture(side);
+  auto& [state, model, system] = fixture;
   const std::vector<int>& offsets = system.neighbour_offsets;
   const std::vector<int>& neighbours = system.neighbours;
   const std::vector<Scalar> weights(system.weights.begin(), system.weights.end());
