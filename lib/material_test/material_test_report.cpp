@@ -58,12 +58,11 @@ std::vector<MaterialTestRow> run_material_tests(const MaterialTestOptions& optio
         row.target_nu = nu;
         row.refused = !supported_poisson_ratios(formulation).contains(nu);
         if (!row.refused) {
-          SpringSettings springs;
-          springs.structural.enabled = springs.shear.enabled = true;
-          springs.material = Material{options.youngs_modulus_pa, nu, options.thickness_m,
-                                      options.density_kg_per_m3, formulation};
           ClothComplex lcc;
-          build_test_sheet(sheet, options.cells, springs, lcc);
+          build_test_sheet(sheet, options.cells,
+                           Material{options.youngs_modulus_pa, nu, options.thickness_m,
+                                    options.density_kg_per_m3, formulation},
+                           lcc);
           row.measured = measure_effective_material(lcc, options.thickness_m);
           if (sheet != TestSheet::equilateral_triangles) {
             row.strip = measure_strip_tension(lcc, options.thickness_m);

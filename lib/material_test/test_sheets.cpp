@@ -65,16 +65,16 @@ std::string_view to_string(TestSheet sheet) {
   return "?";
 }
 
-void build_test_sheet(TestSheet sheet, int cells, const SpringSettings& springs,
-                      ClothComplex& lcc) {
-  const double density_kg_per_m2 =
-      springs.material ? springs.material->areal_density_kg_per_m2() : 0.1;
+void build_test_sheet(TestSheet sheet, int cells, const Material& material, ClothComplex& lcc) {
+  SpringSettings springs;
+  springs.structural.enabled = springs.shear.enabled = true;
+  springs.material = material;
   const IndexedMesh mesh =
       sheet == TestSheet::equilateral_triangles
           ? equilateral_sheet(cells)
           : make_grid_mesh(
                 square_grid(cells, has_quads(sheet) ? GridCells::quads : GridCells::triangles));
-  build_cloth_complex(mesh, density_kg_per_m2, springs, lcc);
+  build_cloth_complex(mesh, material.areal_density_kg_per_m2(), springs, lcc);
   if (sheet == TestSheet::refined_triangles) {
     // two levels finer around two points: triangles of several shapes and sizes
     const double finest_m = 0.25 / cells;

@@ -26,8 +26,9 @@ inline bool has_quads(TestSheet sheet) {
   return sheet == TestSheet::quads;
 }
 
-/// Builds the sheet with about `cells` cells along each side and `springs` into `lcc`, with the
-/// areal density `springs.material` gives (0.1 kg/m^2 without one).
-void build_test_sheet(TestSheet sheet, int cells, const SpringSettings& springs, ClothComplex& lcc);
+/// Builds the sheet with about `cells` cells along each side into `lcc`: structural and shear
+/// springs from `material` (bending springs, which carry no in-plane load, left out) and its
+/// areal density.
+void build_test_sheet(TestSheet sheet, int cells, const Material& material, ClothComplex& lcc);
 
 }  // namespace tissu

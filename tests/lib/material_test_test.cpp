@@ -16,11 +16,8 @@ constexpr double e_pa = 5e5, thickness_m = 5e-4;
 
 EffectiveMaterial measure(StiffnessFormulation formulation, TestSheet sheet, double nu,
                           int cells = 16) {
-  SpringSettings springs;
-  springs.structural.enabled = springs.shear.enabled = true;
-  springs.material = Material{e_pa, nu, thickness_m, 200.0, formulation};
   ClothComplex lcc;
-  build_test_sheet(sheet, cells, springs, lcc);
+  build_test_sheet(sheet, cells, Material{e_pa, nu, thickness_m, 200.0, formulation}, lcc);
   return measure_effective_material(lcc, thickness_m);
 }
 
@@ -146,11 +143,8 @@ TEST(MaterialTest, AStripPullFindsWhatTheHomogenisationFinds) {
         Case{StiffnessFormulation::baudet2009, TestSheet::quads, 0.3, 1e-6},
         Case{StiffnessFormulation::natsupakpong2010, TestSheet::quads, 0.2, 1e-6},
         Case{StiffnessFormulation::van_gelder1998, TestSheet::right_triangles, 1.0 / 3, 0.01}}) {
-    SpringSettings springs;
-    springs.structural.enabled = springs.shear.enabled = true;
-    springs.material = Material{e_pa, c.nu, thickness_m, 200.0, c.formulation};
     ClothComplex lcc;
-    build_test_sheet(c.sheet, 16, springs, lcc);
+    build_test_sheet(c.sheet, 16, Material{e_pa, c.nu, thickness_m, 200.0, c.formulation}, lcc);
     const StripTension strip = measure_strip_tension(lcc, thickness_m);
     const EffectiveMaterial homogenised = measure_effective_material(lcc, thickness_m);
     const std::string name =
