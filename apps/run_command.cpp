@@ -1,5 +1,7 @@
 #include "apps/run_command.hpp"
 
+#include <omp.h>
+
 #include <cstdio>
 
 #include "lib/progress.hpp"
@@ -22,6 +24,8 @@ void add_run_options(CLI::App& app, RunCommand& command) {
 int execute(const RunCommand& command) {
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
+    // the process's thread count is the program's to set, not the library's
+    if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
     RunOptions options;
     options.output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                                     : std::filesystem::path(command.output_dir);

@@ -1,9 +1,9 @@
 #include "lib/simulation.hpp"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "lib/cloth_setup.hpp"
 #include "lib/obstacle_mesh.hpp"
@@ -105,10 +105,61 @@ Adaptation adapt(ClothComplex& lcc, const AdaptiveSettings& adaptive,
   return changes;
 }
 
+/// A step whose positions or velocities stopped being finite.
+struct Divergence {
+  int substep = 0;      ///< 1-based, within the frame
+  double time_s = 0.0;  ///< at the end of that step
+  StepStatus status = StepStatus::non_finite;
+};
+
+/// Stage 1 of a frame: the solver's substeps, with tearing after each one. Stops at the first
+/// step that diverges; the complex then still holds the last good state (the previous frame's, or
+/// that of the last step that tore the cloth in this frame).
+std::optional<Divergence> step_frame(const Scenario& scenario, ClothComplex& lcc,
+                                     CompiledCloth& cloth, StepWorkspace& workspace,
+                                     TearStep& tearing, FrameSteps& steps) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int sub = 0; sub < scenario.substeps; ++sub) {
+    const StepStatus status = step(cloth.model, scenario.solver, cloth.state, workspace);
+    steps.add(status, workspace);
+    if (status == StepStatus::non_finite) return Divergence{sub + 1, cloth.state.time, status};
+    const TearReport torn = tearing.after_step(lcc, cloth);
+    steps.tears += torn.tears;
+    steps.tip_splits += torn.tip_refinements;
+  }
+  steps.wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::nullopt;
+}
+
+/// Stage 2 of a frame: writes the stepped state into the complex (which the recording reads) and,
+/// on the frames where adaptation is due, refines and coarsens it.
+Adaptation adapt_frame(const Scenario& scenario, int frame, ClothComplex& lcc,
+                       CompiledCloth& cloth) {
+  const bool due = scenario.adaptive.enabled && frame % scenario.adaptive.every == 0;
+  Adaptation changes;
+  edit_and_recompile(lcc, cloth, [&](ClothComplex& complex) {
+    if (!due) return false;
+    changes = adapt(complex, scenario.adaptive, scenario.springs);
+    return changes.splits + changes.merges > 0;
+  });
+  return changes;
+}
+
+std::string divergence_message(const Scenario& scenario, int frame, const Divergence& divergence,
+                               const std::filesystem::path& last_good) {
+  return "frame " + std::to_string(frame) + ", step " + std::to_string(divergence.substep) +
+         " of " + std::to_string(scenario.substeps) + " (t = " + std::to_string(divergence.time_s) +
+         " s): " + to_string(divergence.status) + " positions or velocities; the time step " +
+         std::to_string(scenario.solver.time_step) +
+         " s is likely too large for the stiffness (more substeps or the implicit_euler "
+         "integrator help); last good state written to " +
+         last_good.string();
+}
+
 }  // namespace
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
-  if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
   const int frame_count = options.frames.value_or(scenario.frames);
   const OutputOptions& output = scenario.output;
   std::filesystem::create_directories(options.output_dir);
@@ -129,6 +180,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     result.video_warning = rendered.video_warning;
   };
 
+  // stage 3 of a frame: statistics, meshes, images and callbacks, all read from the complex
   auto record = [&](int frame, const FrameSteps& steps, Adaptation changes) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits + steps.tip_splits;
@@ -149,51 +201,17 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   StepWorkspace workspace;
   TearStep tearing(scenario);
   for (int frame = 1; frame <= frame_count; ++frame) {
-    State next = cloth.state;
     FrameSteps steps;
-    const auto start = std::chrono::steady_clock::now();
-    for (int sub = 0; sub < scenario.substeps; ++sub) {
-      const StepStatus status = step(cloth.model, scenario.solver, next, workspace);
-      steps.add(status, workspace);
-      if (status == StepStatus::non_finite) {
-        // the complex still holds the last good state: the previous frame's, or that of the
-        // last step that tore the cloth in this frame
-        const auto last_good =
-            frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
-        write_mesh(last_good, current_mesh(lcc), output.mesh_format);
-        result.ok = false;
-        result.failure = "frame " + std::to_string(frame) + ", step " + std::to_string(sub + 1) +
-                         " of " + std::to_string(scenario.substeps) +
-                         " (t = " + std::to_string(next.time) + " s): " + to_string(status) +
-                         " positions or velocities; the time step " +
-                         std::to_string(scenario.solver.time_step) +
-                         " s is likely too large for the stiffness (more substeps or the "
-                         "implicit_euler integrator help); last good state written to " +
-                         last_good.string();
-        render_recorded(result);
-        return result;
-      }
-      const TearReport torn = tearing.after_step(lcc, cloth, next);
-      if (torn.tears > 0) {
-        steps.tears += torn.tears;
-        steps.tip_splits += torn.tip_refinements;
-        cloth = compile(lcc, next.time);
-        next = cloth.state;
-        workspace = StepWorkspace{};
-      }
+    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, tearing, steps)) {
+      const auto last_good =
+          frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
+      write_mesh(last_good, current_mesh(lcc), output.mesh_format);
+      result.ok = false;
+      result.failure = divergence_message(scenario, frame, *divergence, last_good);
+      render_recorded(result);
+      return result;
     }
-    steps.wall_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    cloth.state = std::move(next);
-    write_back(cloth, cloth.state, lcc);
-    Adaptation changes;
-    if (scenario.adaptive.enabled && frame % scenario.adaptive.every == 0) {
-      changes = adapt(lcc, scenario.adaptive, scenario.springs);
-      if (changes.splits + changes.merges > 0) {
-        cloth = compile(lcc, cloth.state.time);
-        workspace = StepWorkspace{};
-      }
-    }
+    const Adaptation changes = adapt_frame(scenario, frame, lcc, cloth);
     record(frame, steps, changes);
     result.frames_done = frame;
   }

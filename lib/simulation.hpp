@@ -34,7 +34,9 @@ struct RunResult {
 /// Runs `scenario`. Bad meshes or pins throw (MeshError, PinError) before the first step; a solver
 /// failure stops the run with ok = false after writing the last good state. When rendering is on,
 /// the frames are kept in memory and rendered after the run (a failed one too), so that the
-/// default camera frames the whole run.
+/// default camera frames the whole run. Runs on the calling thread's OpenMP thread count: the
+/// library sets no process state, so Scenario::threads is for the program to apply (the tissu
+/// apps call omp_set_num_threads with it); results do not depend on it.
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
 
 }  // namespace tissu

@@ -16,11 +16,11 @@ class TearStep {
  public:
   explicit TearStep(const Scenario& scenario);
 
-  /// Looks at the stepped `state` of `cloth` (compiled from `lcc`). When a structural spring
-  /// exceeds the lowest tearing strain (a cheap test on the flat model) or a cut is due, writes
-  /// the state back into `lcc` and tears it (topology/tear.hpp). When edges were torn, `lcc`
-  /// changed and must be recompiled.
-  TearReport after_step(ClothComplex& lcc, const CompiledCloth& cloth, const State& state);
+  /// Looks at the stepped state of `cloth` (compiled from `lcc`). When a structural spring
+  /// exceeds the lowest tearing strain (a cheap test on the flat model) or a cut is due, tears
+  /// `lcc` (topology/tear.hpp) through edit_and_recompile(): when edges were torn, `cloth` is
+  /// recompiled, its state kept.
+  TearReport after_step(ClothComplex& lcc, CompiledCloth& cloth);
 
  private:
   const Scenario& m_scenario;

@@ -1,12 +1,18 @@
 #include "solver/spring_model.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace tissu {
 namespace {
+
+std::uint64_t next_model_identity() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
 
 [[noreturn]] void fail(const std::string& what) {
   throw std::invalid_argument("finalize_model: " + what);
@@ -176,6 +182,7 @@ void finalize_model(SpringModel& model) {
     }
   }
   build_coupling_incidence(model);
+  model.identity = next_model_identity();
 }
 
 }  // namespace tissu

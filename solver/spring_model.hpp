@@ -53,13 +53,20 @@ struct SpringModel {
   ParticleSpringIncidence incidence;  ///< filled by finalize_model()
   Eigen::MatrixX2i surface_edges;     ///< #E x 2 edges of the triangles, (i < j), each once,
                                       ///< sorted; filled by finalize_model(), for collisions
+  /// What this model is, for the caches derived from it (geometry-central's modificationTick):
+  /// a process-wide generation counter that finalize_model() advances and nothing else sets, so
+  /// two finalizations never share a value and 0 means "never finalized". Every cache a workspace
+  /// keeps (Projective Dynamics system and factorisation, matrix pattern, collision pairs, warm
+  /// starts) is keyed on it: after changing any field, call finalize_model() again. A copy keeps
+  /// the identity, which is right while the copy is not changed.
+  std::uint64_t identity = 0;
 
   int particle_count() const { return static_cast<int>(mass.size()); }
   int spring_count() const { return static_cast<int>(springs.rows()); }
 };
 
 /// Fills the derived fields (inverse_mass, incidence, coupling_incidence, surface_edges) from the
-/// others. Call after filling a model.
+/// others and gives the model a new identity. Call after filling or changing a model.
 void finalize_model(SpringModel& model);
 
 /// Dynamic state: positions and velocities of every particle, xyz interleaved.

@@ -20,7 +20,7 @@ void check_state_size(const SpringModel& model, const State& state) {
                                 " positions and " + std::to_string(state.v.size()) +
                                 " velocities, expected 3#P = " + std::to_string(dofs) + " each");
   }
-  if (model.inverse_mass.size() != model.mass.size() ||
+  if (model.identity == 0 || model.inverse_mass.size() != model.mass.size() ||
       model.incidence.offsets.size() != static_cast<std::size_t>(model.particle_count()) + 1) {
     throw std::invalid_argument("step: model is not finalized, call finalize_model() first");
   }

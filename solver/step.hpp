@@ -31,7 +31,9 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
 /// Same as step(model, params, state), with the scratch buffers kept by the caller between steps:
 /// no heap allocation once the sizes are known, except the few vectors of the implicit
 /// integrator's conjugate gradient.
-/// One workspace per concurrently stepped model; it adapts by itself when the model changes.
+/// One workspace per concurrently stepped model. It adapts by itself when the model changes: every
+/// cache in it is keyed on SpringModel::identity, so stepping a recompiled model (or another one)
+/// with the same workspace gives the same result as a fresh workspace.
 StepStatus step(const SpringModel& model, const SolverParams& params, State& state,
                 StepWorkspace& workspace);
 

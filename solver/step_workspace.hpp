@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Scratch buffers of a time step, owned by the caller (like MuJoCo's mjData) so that stepping
-/// allocates nothing once the sizes are known. Not shared between threads stepping concurrently.
+/// allocates nothing once the sizes are known. Caches are keyed on the model's identity
+/// (SpringModel::identity), never on sizes. Not shared between threads stepping concurrently.
 
 #include <Eigen/Core>
 

@@ -27,4 +27,19 @@ CompiledCloth compile(ClothComplex& lcc, double time_s = 0.0);
 /// from.
 void write_back(const CompiledCloth& compiled, const State& state, ClothComplex& lcc);
 
+/// Edits the complex of a compiled cloth and recompiles it, keeping the state (MuJoCo's
+/// mj_recompile, "recompile, preserving the state"): writes cloth.state into `lcc`, so that the
+/// edit sees the current positions and velocities; calls `edit(lcc)`, which returns whether it
+/// changed the complex; if it did, compiles `lcc` again at cloth.state.time. The new model has a
+/// new identity (SpringModel::identity), so the caches of any workspace that steps it rebuild by
+/// themselves. Returns what `edit` returned. Every topological edit of a running cloth goes
+/// through here: cloth.particle_vertices and cloth.spring_darts are stale once `edit` has run.
+template <class Edit>
+bool edit_and_recompile(ClothComplex& lcc, CompiledCloth& cloth, Edit&& edit) {
+  write_back(cloth, cloth.state, lcc);
+  if (!edit(lcc)) return false;
+  cloth = compile(lcc, cloth.state.time);
+  return true;
+}
+
 }  // namespace tissu

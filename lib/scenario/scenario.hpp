@@ -70,7 +70,7 @@ struct Scenario {
   int frames = 1;            ///< frames simulated after frame 0
   double frame_rate = 30.0;  ///< frames per simulated second (Hz)
   int substeps = 1;          ///< solver steps per frame
-  int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default
+  int threads = 0;           ///< OpenMP threads, 0 for OpenMP's default; applied by the apps
   AdaptiveSettings adaptive;
   TearingSettings tearing;
   OutputOptions output;

@@ -203,13 +203,12 @@ const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
                                                       const Eigen::VectorXd& end_x,
                                                       SelfCollisionCache& cache) {
   const double half_skin_m = 0.5 * o.skin_m;
-  const bool same_model =
-      cache.built_at_x.size() == end_x.size() && cache.triangles == model.triangles.rows();
+  const bool same_model = cache.built_for_model == model.identity && cache.built_at_x.size() != 0;
   if (same_model && farthest_move_m(start_x, cache.built_at_x) <= half_skin_m &&
       farthest_move_m(end_x, cache.built_at_x) <= half_skin_m) {
     return cache.pairs;
   }
-  cache.triangles = model.triangles.rows();
+  cache.built_for_model = model.identity;
   if (farthest_move_m(end_x, start_x) <= half_skin_m) {
     cache.built_at_x = end_x;
     cache.pairs = collision_candidates(model, end_x, end_x, o.thickness_m + o.skin_m);

@@ -28,9 +28,9 @@ struct SelfCollisionOptions {
 /// found: a neighbour list with a skin (Verlet 1967), so that a cloth at rest or moving slowly is
 /// hashed every few steps instead of every step.
 struct SelfCollisionCache {
-  std::vector<CandidatePair> pairs;  ///< every pair within thickness + skin at `built_at_x`
-  Eigen::VectorXd built_at_x;        ///< 3#P positions when they were found (m); empty: none
-  Eigen::Index triangles = -1;       ///< the model's triangle count then, to notice a new model
+  std::vector<CandidatePair> pairs;   ///< every pair within thickness + skin at `built_at_x`
+  Eigen::VectorXd built_at_x;         ///< 3#P positions when they were found (m); empty: none
+  std::uint64_t built_for_model = 0;  ///< SpringModel::identity they were found on (0 = none)
 };
 
 /// What one step's self-collision handling found.

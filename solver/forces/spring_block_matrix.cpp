@@ -8,12 +8,6 @@
 namespace tissu {
 namespace {
 
-bool pattern_matches(const SpringModel& model, const SpringBlockPattern& pattern) {
-  return pattern.particle_count == model.particle_count() &&
-         pattern.springs.rows() == model.springs.rows() && pattern.springs == model.springs &&
-         pattern.incidence_block.size() == model.incidence.springs.size();
-}
-
 void build_blocks(const SpringModel& model, SpringBlockPattern& pattern) {
   const int particles = model.particle_count();
   const ParticleSpringIncidence& incidence = model.incidence;
@@ -80,9 +74,9 @@ void add_block(double* row_values, int blocks_in_row, int local_block, const Eig
 void update_spring_block_pattern(const SpringModel& model, SpringBlockPattern& pattern) {
   assert(model.incidence.offsets.size() == static_cast<std::size_t>(model.particle_count()) + 1 &&
          "call finalize_model() first");
-  if (pattern_matches(model, pattern)) return;
+  if (pattern.built_for_model != 0 && pattern.built_for_model == model.identity) return;
+  pattern.built_for_model = model.identity;
   pattern.particle_count = model.particle_count();
-  pattern.springs = model.springs;
   build_blocks(model, pattern);
   build_scalar_indices(pattern);
 }

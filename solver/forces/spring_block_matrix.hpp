@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cstdint>
 #include <vector>
 
 #include "solver/spring_model.hpp"
@@ -16,18 +17,18 @@ namespace tissu {
 /// pair of particles joined by at least one spring. Because it is symmetric, the same index
 /// arrays describe the matrix in row-major (CSR) and column-major (CSC) storage.
 struct SpringBlockPattern {
-  int particle_count = 0;            ///< #P the pattern was built for
-  Eigen::MatrixX2i springs;          ///< #S x 2 copy of the springs the pattern was built for
-  std::vector<int> block_offsets;    ///< #P+1, blocks of block-row i: [offsets[i], offsets[i+1])
-  std::vector<int> block_columns;    ///< #blocks particle id of each block, ascending in a row
-  std::vector<int> diagonal_block;   ///< #P index of block (i, i) in block_columns
-  std::vector<int> incidence_block;  ///< #incidences index of block (i, other end of the spring)
-  std::vector<int> outer;            ///< 3#P+1 first scalar entry of each scalar row
-  std::vector<int> inner;            ///< #nonzeros scalar column of each entry, ascending
+  std::uint64_t built_for_model = 0;  ///< SpringModel::identity it was built from (0 = none)
+  int particle_count = 0;             ///< #P the pattern was built for
+  std::vector<int> block_offsets;     ///< #P+1, blocks of block-row i: [offsets[i], offsets[i+1])
+  std::vector<int> block_columns;     ///< #blocks particle id of each block, ascending in a row
+  std::vector<int> diagonal_block;    ///< #P index of block (i, i) in block_columns
+  std::vector<int> incidence_block;   ///< #incidences index of block (i, other end of the spring)
+  std::vector<int> outer;             ///< 3#P+1 first scalar entry of each scalar row
+  std::vector<int> inner;             ///< #nonzeros scalar column of each entry, ascending
 };
 
-/// Rebuilds `pattern` from model.springs and model.incidence unless it was already built for the
-/// same particle count and springs (checked in O(#S)), so a workspace survives model recompiles.
+/// Rebuilds `pattern` from model.springs and model.incidence unless it was already built for this
+/// model (SpringModel::identity).
 void update_spring_block_pattern(const SpringModel& model, SpringBlockPattern& pattern);
 
 /// Fills `matrix` (3#P x 3#P) on `pattern` with the symmetric block Laplacian of the springs:

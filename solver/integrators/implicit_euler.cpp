@@ -108,8 +108,9 @@ StepStatus implicit_euler_step(const SpringModel& model, const SolverParams& par
   cg.setTolerance(params.implicit.cg_tolerance);
   cg.setMaxIterations(params.implicit.cg_max_iterations);
   cg.compute(implicit.system_matrix);
-  if (implicit.velocity_change.size() != 3 * particles || !implicit.velocity_change.allFinite()) {
-    implicit.velocity_change.setZero(3 * particles);
+  if (implicit.warm_start_model != model.identity || !implicit.velocity_change.allFinite()) {
+    implicit.velocity_change.setZero(3 * particles);  // the last solve was for another model
+    implicit.warm_start_model = model.identity;
   }
   implicit.velocity_change = cg.solveWithGuess(implicit.rhs, implicit.velocity_change);
   implicit.cg_iterations = static_cast<int>(cg.iterations());

@@ -17,8 +17,8 @@ namespace tissu {
 
 /// Sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) of the free-particle matrix
 /// A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
-/// Refactorised when the system's generation changes (update_pd_system() rebuilt it: new
-/// springs, stiffnesses, masses, pins or time step). Copying gives an unfactorised solver (Eigen's
+/// Refactorised when the system's generation changes (update_pd_system() rebuilt it for a new
+/// model or time step). Copying gives an unfactorised solver (Eigen's
 /// factorisations are not copyable); it factorises again on first use.
 class PdDirectSolver {
  public:

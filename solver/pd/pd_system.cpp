@@ -7,11 +7,8 @@ namespace tissu {
 namespace {
 
 bool is_built_for(const SpringModel& model, double h, const PdSystem& system) {
-  return system.generation != 0 && system.built_time_step == h &&
-         system.built_springs.rows() == model.springs.rows() &&
-         system.built_mass.size() == model.mass.size() && system.built_pinned == model.pinned &&
-         system.built_springs == model.springs && system.built_stiffness == model.stiffness &&
-         system.built_mass == model.mass;
+  return system.generation != 0 && system.built_for_model == model.identity &&
+         system.built_time_step == h;
 }
 
 std::uint64_t next_generation() {
@@ -58,10 +55,7 @@ bool update_pd_system(const SpringModel& model, double h, PdSystem& system) {
   if (is_built_for(model, h, system)) return false;
   const int particles = model.particle_count();
   const ParticleSpringIncidence& incidence = model.incidence;
-  system.built_springs = model.springs;
-  system.built_stiffness = model.stiffness;
-  system.built_mass = model.mass;
-  system.built_pinned = model.pinned;
+  system.built_for_model = model.identity;
   system.built_time_step = h;
   system.generation = next_generation();
 

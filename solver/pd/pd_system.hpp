@@ -18,16 +18,11 @@ namespace tissu {
 ///   a_i p_i - sum over springs (i, j) of s_ij p_j = c_i,   a_i = m_i/h^2 + sum s_ij  (kg/s^2),
 /// where pinned neighbours j enter with their prescribed positions. Neighbour lists follow
 /// model.incidence (one entry per spring end, so two springs joining i and j give two entries).
-/// Rebuilt by update_pd_system() only when the model's springs, stiffnesses, masses or pins, or
-/// the time step, change.
+/// Rebuilt by update_pd_system() only when the model (its identity) or the time step changes.
 struct PdSystem {
-  // what the system was built from, compared entry by entry to detect a changed model
-  Eigen::MatrixX2i built_springs;          ///< #S x 2
-  Eigen::VectorXd built_stiffness;         ///< #S (N/m)
-  Eigen::VectorXd built_mass;              ///< #P (kg)
-  std::vector<std::uint8_t> built_pinned;  ///< #P
-  double built_time_step = 0.0;            ///< h (s)
-  std::uint64_t generation = 0;            ///< unique per build (0 = never built)
+  std::uint64_t built_for_model = 0;  ///< SpringModel::identity it was built from (0 = none)
+  double built_time_step = 0.0;       ///< h (s)
+  std::uint64_t generation = 0;       ///< unique per build (0 = never built)
 
   std::vector<int> neighbour_offsets;   ///< #P+1 = model.incidence.offsets
   std::vector<int> neighbours;          ///< #incidences other end j of each spring of i
@@ -55,10 +50,9 @@ struct PdSystem {
   std::vector<int> block_graph_neighbours;  ///< blocks sharing a spring with each block (scratch)
 };
 
-/// Makes `system` describe `model` at time step h (s): rebuilds it (O(#P + #S), allocating) if
-/// the springs, stiffnesses, masses, pins or h differ from those it was built with, otherwise
-/// leaves it as is after an O(#P + #S) comparison (cheaper than one Jacobi sweep). Returns true if
-/// it rebuilt. The model must be finalized.
+/// Makes `system` describe `model` at time step h (s): rebuilds it (O(#P + #S), allocating) if it
+/// was built for another model (SpringModel::identity) or another h, otherwise leaves it as is.
+/// Returns true if it rebuilt. The model must be finalized.
 bool update_pd_system(const SpringModel& model, double time_step_s, PdSystem& system);
 
 }  // namespace tissu

@@ -11,12 +11,13 @@
 #include "lib/scenario/scenario.hpp"
 #include "lib/simulation.hpp"
 #include "tests/test_temp_dir.hpp"
+#include "tests/test_thread_count.hpp"
 
 namespace tissu {
 namespace {
 
 /// A 0.2 m x 1 m strip in the x-z plane, 0.05 m cells, its ends pulled apart at 0.1 m/s each.
-std::string pulled_strip(const std::string& tearing, int threads = 0) {
+std::string pulled_strip(const std::string& tearing) {
   return R"({
   "cloth": { "grid": { "size": [0.2, 1.0], "resolution": [4, 20] },
              "density": 0.2,
@@ -27,8 +28,7 @@ std::string pulled_strip(const std::string& tearing, int threads = 0) {
   "tearing": )" +
          tearing +
          R"(,
-  "simulation": { "frames": 45, "substeps": 10, "threads": )" +
-         std::to_string(threads) + R"( },
+  "simulation": { "frames": 45, "substeps": 10 },
   "output": { "meshes": false }
 })";
 }
@@ -141,8 +141,12 @@ TEST(TearingRun, AScriptedCutSeparatesTheStripAtItsTime) {
 
 TEST(TearingRun, TheSameTearsForOneAndTwoThreads) {
   const std::string tearing = R"({ "strain": 0.15, "max_tears_per_step": 1 })";
-  const TearingRun one = run(pulled_strip(tearing, 1), "one_thread");
-  const TearingRun two = run(pulled_strip(tearing, 2), "two_threads");
+  auto run_on = [&](int threads, const std::string& name) {
+    const test::ScopedThreadCount count(threads);
+    return run(pulled_strip(tearing), name);
+  };
+  const TearingRun one = run_on(1, "one_thread");
+  const TearingRun two = run_on(2, "two_threads");
   ASSERT_EQ(one.frames.size(), two.frames.size());
   for (std::size_t f = 0; f < one.frames.size(); ++f) {
     EXPECT_EQ(one.frames[f].tears, two.frames[f].tears) << "frame " << f;

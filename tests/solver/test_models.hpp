@@ -3,7 +3,6 @@
 /// Small models shared by the solver tests.
 
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <Eigen/Core>
 
 #include <array>
@@ -12,6 +11,7 @@
 
 #include "solver/spring_model.hpp"
 #include "solver/step.hpp"
+#include "tests/test_thread_count.hpp"
 
 namespace tissu::test {
 
@@ -133,22 +133,49 @@ inline SpringModel grid_model(int nx, int ny, double spacing, double particle_ma
   return model;
 }
 
+/// `lower` and `upper` in one model (upper's particles after lower's), and their states joined
+/// (velocities zero).
+inline SpringModel joined_models(const SpringModel& lower, const State& lower_state,
+                                 const SpringModel& upper, const State& upper_state, State& state) {
+  const int offset = lower.particle_count();
+  SpringModel m;
+  m.mass.resize(offset + upper.particle_count());
+  m.mass << lower.mass, upper.mass;
+  m.pinned = lower.pinned;
+  m.pinned.insert(m.pinned.end(), upper.pinned.begin(), upper.pinned.end());
+  m.springs.resize(lower.spring_count() + upper.spring_count(), 2);
+  m.springs << lower.springs, (upper.springs.array() + offset).matrix();
+  m.rest_length.resize(m.springs.rows());
+  m.rest_length << lower.rest_length, upper.rest_length;
+  m.stiffness.resize(m.springs.rows());
+  m.stiffness << lower.stiffness, upper.stiffness;
+  m.damping.resize(m.springs.rows());
+  m.damping << lower.damping, upper.damping;
+  m.kind = lower.kind;
+  m.kind.insert(m.kind.end(), upper.kind.begin(), upper.kind.end());
+  m.triangles.resize(lower.triangles.rows() + upper.triangles.rows(), 3);
+  m.triangles << lower.triangles, (upper.triangles.array() + offset).matrix();
+  finalize_model(m);
+  state.x.resize(lower_state.x.size() + upper_state.x.size());
+  state.x << lower_state.x, upper_state.x;
+  state.v = Eigen::VectorXd::Zero(state.x.size());
+  return m;
+}
+
 /// Steps a copy of `initial` `steps` times with 1, then 2 OpenMP threads, each with a fresh
 /// workspace; returns both end states. Restores the thread count.
 inline std::array<State, 2> step_with_one_and_two_threads(const SpringModel& model,
                                                           const SolverParams& params,
                                                           const State& initial, int steps) {
   std::array<State, 2> results;
-  const int previous = omp_get_max_threads();
   for (int threads = 1; threads <= 2; ++threads) {
-    omp_set_num_threads(threads);
+    const ScopedThreadCount count(threads);
     State& state = results[threads - 1];
     state = initial;
     StepWorkspace workspace;
     for (int n = 0; n < steps; ++n)
       EXPECT_EQ(step(model, params, state, workspace), StepStatus::ok);
   }
-  omp_set_num_threads(previous);
   return results;
 }
 

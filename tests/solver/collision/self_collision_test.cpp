@@ -15,34 +15,6 @@
 namespace tissu {
 namespace {
 
-/// `lower` and `upper` in one model (upper's particles after lower's), and their states joined.
-SpringModel joined(const SpringModel& lower, const State& lower_state, const SpringModel& upper,
-                   const State& upper_state, State& state) {
-  const int offset = lower.particle_count();
-  SpringModel m;
-  m.mass.resize(offset + upper.particle_count());
-  m.mass << lower.mass, upper.mass;
-  m.pinned = lower.pinned;
-  m.pinned.insert(m.pinned.end(), upper.pinned.begin(), upper.pinned.end());
-  m.springs.resize(lower.spring_count() + upper.spring_count(), 2);
-  m.springs << lower.springs, (upper.springs.array() + offset).matrix();
-  m.rest_length.resize(m.springs.rows());
-  m.rest_length << lower.rest_length, upper.rest_length;
-  m.stiffness.resize(m.springs.rows());
-  m.stiffness << lower.stiffness, upper.stiffness;
-  m.damping.resize(m.springs.rows());
-  m.damping << lower.damping, upper.damping;
-  m.kind = lower.kind;
-  m.kind.insert(m.kind.end(), upper.kind.begin(), upper.kind.end());
-  m.triangles.resize(lower.triangles.rows() + upper.triangles.rows(), 3);
-  m.triangles << lower.triangles, (upper.triangles.array() + offset).matrix();
-  finalize_model(m);
-  state.x.resize(lower_state.x.size() + upper_state.x.size());
-  state.x << lower_state.x, upper_state.x;
-  state.v = Eigen::VectorXd::Zero(state.x.size());
-  return m;
-}
-
 constexpr int side = 12;               // particles per side of each sheet
 constexpr double spacing_m = 0.03;     // 0.33 m sheets
 constexpr double thickness_m = 0.004;  // kept between the sheets
@@ -59,7 +31,7 @@ struct StackedSheets {
       lower_state.x.segment<3>(3 * p) += Eigen::Vector3d(0.0, 0.0, 0.2);
       upper_state.x.segment<3>(3 * p) += Eigen::Vector3d(0.01, 0.01, 0.25);
     }
-    model = joined(lower, lower_state, upper, upper_state, state);
+    model = test::joined_models(lower, lower_state, upper, upper_state, state);
     params.integrator = Integrator::implicit_euler;
     params.time_step = 1.0 / 300.0;
     params.environment.air_damping = 0.5;

@@ -1,7 +1,6 @@
 #include "solver/forces/accumulate_forces.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <random>
 
@@ -33,12 +32,10 @@ SpringModel perturbed_grid(State& state) {
 
 Eigen::VectorXd forces_with_threads(int threads, const SpringModel& model,
                                     const Environment& environment, const State& state) {
-  const int previous = omp_get_max_threads();
-  omp_set_num_threads(threads);
+  const test::ScopedThreadCount count(threads);
   ForceWorkspace workspace;
   Eigen::VectorXd force;
   accumulate_forces(model, environment, 0.37, state.x, state.v, workspace, force);
-  omp_set_num_threads(previous);
   return force;
 }
 

@@ -2,7 +2,6 @@
 // same linear system, on random spring networks and on a cloth grid.
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <random>
@@ -150,11 +149,10 @@ TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
   State state;
   SpringModel model = test::grid_model(30, 30, 0.05, 0.002, 200.0, 0.0, state);
   const LinearProblem problem = make_problem(std::move(model), state, 1.0 / 100.0, 9);
-  const int previous = omp_get_max_threads();
   for (const PdGlobalSolver solver : iterative_solvers) {
     Eigen::VectorXd results[2];
     for (int threads = 1; threads <= 2; ++threads) {
-      omp_set_num_threads(threads);
+      const test::ScopedThreadCount count(threads);
       ProjectiveDynamicsOptions options;
       options.global_solver = solver;
       Eigen::VectorXd p = problem.start;
@@ -166,7 +164,6 @@ TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
     EXPECT_TRUE((results[0].array() == results[1].array()).all()) << to_string(solver);
     EXPECT_NE(results[0], problem.start) << to_string(solver);
   }
-  omp_set_num_threads(previous);
 }
 
 TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
@@ -182,8 +179,12 @@ TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
   EXPECT_TRUE(update_pd_system(model, 0.02, system));  // new h
   EXPECT_TRUE(direct.factorize(system));
   EXPECT_EQ(direct.factorization_count(), 2);
-  model.stiffness[3] *= 2.0;  // new stiffness
+  model.stiffness[3] *= 2.0;  // new stiffness: a changed model is finalized again
+  finalize_model(model);
   EXPECT_TRUE(update_pd_system(model, 0.02, system));
+  EXPECT_FALSE(update_pd_system(model, 0.02, system));
+  SpringModel same = model;  // a copy is the same model
+  EXPECT_FALSE(update_pd_system(same, 0.02, system));
   model.pinned[4] = 1;  // new pin
   finalize_model(model);
   EXPECT_TRUE(update_pd_system(model, 0.02, system));
