@@ -79,7 +79,7 @@ RenderFrame snapshot(const ClothComplex& lcc, const std::vector<Obstacle>& obsta
   RenderFrame frame{current_mesh(lcc), {}, face_edge_strain(lcc)};
   frame.pinned.resize(frame.mesh.vertices.size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    frame.pinned[v->info().particle_index] = v->info().pinned ? 1 : 0;
+    frame.pinned[v->info().index_at_last_compile] = v->info().pinned ? 1 : 0;
   }
   for (const Obstacle& obstacle : obstacles) {
     if (obstacle.shape != ObstacleShape::plane)

@@ -37,6 +37,10 @@ void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2
     lcc.set_attribute<2>(first, lcc.create_attribute<2>());
   }
   builder.end_surface();
+  // the builder creates no edge attributes: one per edge, to be filled by assign_springs
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    lcc.set_attribute<1>(d, lcc.create_attribute<1>());
+  }
 
   assign_face_rest(lcc, areal_density_kg_per_m2);
   lump_masses(lcc);

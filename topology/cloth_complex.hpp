@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// The cloth held in a CGAL linear cell complex (dimension 2 in 3D, CGAL 5.5 API): darts carry the
-/// springs, vertices the particles, faces the rest area and material. Heavy header: include it
-/// only from topology/ and lib/ sources.
+/// The cloth held in a CGAL linear cell complex (dimension 2 in 3D, CGAL 5.5 API): vertices carry
+/// the particles, edges their structural and bending springs, darts the per-corner data (a quad's
+/// shear diagonal, Delingette's couplings), faces the rest area and material (docs/complex.md).
+/// Heavy header: include it only from topology/ and lib/ sources.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
@@ -15,24 +16,30 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = Kernel::Point_3;
 using Vector3 = Kernel::Vector_3;
 
-/// Whether a dart's spring slot has been filled, and with what. Darts that CGAL creates start
+/// Whether a spring slot has been filled, and with what. Edges and darts that CGAL creates start
 /// unassigned; the code that creates them must assign them.
 enum class SpringSlot : std::uint8_t { unassigned, absent, present };
 
-/// One spring as stored on a dart; both darts that hold the same spring agree.
-struct DartSpring {
+/// One spring as stored in the complex: on an edge (structural, bending) or on a dart (a quad's
+/// shear diagonal).
+struct StoredSpring {
   SpringSlot slot = SpringSlot::unassigned;
   double stiffness = 0.0;    ///< k (N/m)
   double damping = 0.0;      ///< nu (N s/m)
   double rest_length = 0.0;  ///< l0 (m), measured between material coordinates
 };
 
-/// Mechanical attributes of a dart (a half-edge of one face).
-struct DartMechanics {
-  DartSpring edge;     ///< structural spring along the dart's edge
-  DartSpring bending;  ///< spring across the dart's edge, between the vertices that follow the
-                       ///< edge in its two faces (the hinge's apices for triangles)
-  DartSpring shear;    ///< quads only: diagonal from the dart's origin to the opposite corner
+/// The springs of an edge (its 1-attribute): stored once, whichever of the edge's one or two darts
+/// reads them.
+struct EdgeSprings {
+  StoredSpring structural;  ///< along the edge
+  StoredSpring bending;     ///< across the edge, between the vertices that follow the edge in its
+                            ///< two faces (the hinge's apices for triangles); absent on borders
+};
+
+/// Per-corner data of a dart (a half-edge of one face).
+struct CornerMechanics {
+  StoredSpring shear;  ///< quads only: diagonal from the dart's origin to the opposite corner
   /// Coupling Gamma (N/m) between the stretches of this dart's structural spring and the next
   /// dart's in the face (energy Gamma dl dl', Delingette 2008's angular term); 0 for none.
   double edge_coupling = 0.0;
@@ -45,7 +52,9 @@ struct Particle {
   Point3 rest_position = CGAL::ORIGIN;   ///< material coordinates (m)
   bool pinned = false;                   ///< motion prescribed (velocity kept)
   int source_index = -1;                 ///< index in the input grid or mesh, -1 if created
-  int particle_index = -1;               ///< index in the last compiled SpringModel
+  /// index in the SpringModel last compiled from the complex: valid from a compile() until the
+  /// next topological edit, which leaves it stale, or -1 or copied on particles it creates
+  int index_at_last_compile = -1;
   /// 0 for input particles; for one made by a split, 1 + the highest level among the corners of
   /// the faces it split. Anything that later changes its neighbourhood has a higher level, so
   /// undoing splits by decreasing level undoes them in a valid order (coarsen.hpp).
@@ -67,10 +76,11 @@ struct FaceRest {
 struct ClothItems {
   template <class Refs>
   struct Dart_wrapper {
-    using Dart_info = DartMechanics;
+    using Dart_info = CornerMechanics;
     using Vertex_attribute = CGAL::Cell_attribute_with_point<Refs, Particle>;
+    using Edge_attribute = CGAL::Cell_attribute<Refs, EdgeSprings>;
     using Face_attribute = CGAL::Cell_attribute<Refs, FaceRest>;
-    using Attributes = std::tuple<Vertex_attribute, void, Face_attribute>;
+    using Attributes = std::tuple<Vertex_attribute, Edge_attribute, Face_attribute>;
   };
 };
 
@@ -79,6 +89,7 @@ using ClothComplex = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3, Cloth
 using Dart_handle = ClothComplex::Dart_handle;
 using Dart_const_handle = ClothComplex::Dart_const_handle;
 using Vertex_handle = ClothComplex::Vertex_attribute_handle;
+using Edge_handle = ClothComplex::Attribute_handle<1>::type;
 using Face_handle = ClothComplex::Attribute_handle<2>::type;
 
 }  // namespace tissu

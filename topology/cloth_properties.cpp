@@ -19,10 +19,10 @@ double rest_distance(const Point3& a, const Point3& b) {
   return std::sqrt(CGAL::squared_distance(a, b));
 }
 
-DartSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
-                       double rest_length_m) {
-  if (!kind.enabled || !(rest_length_m > 0.0)) return DartSpring{SpringSlot::absent, 0, 0, 0};
-  return DartSpring{SpringSlot::present, stiffness_n_per_m, kind.damping, rest_length_m};
+StoredSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
+                         double rest_length_m) {
+  if (!kind.enabled || !(rest_length_m > 0.0)) return StoredSpring{SpringSlot::absent, 0, 0, 0};
+  return StoredSpring{SpringSlot::present, stiffness_n_per_m, kind.damping, rest_length_m};
 }
 
 Eigen::Vector3d rest_vector(const ClothComplex& lcc, Dart_const_handle dart) {
@@ -129,7 +129,8 @@ Vertex_handle vertex_after_edge(ClothComplex& lcc, Dart_handle dart) {
 void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
   const Material* material = settings.material ? &*settings.material : nullptr;
   const FaceShare own = material ? face_share_of_edge(lcc, d, *material) : FaceShare{};
-  DartMechanics& mechanics = lcc.info(d);
+  EdgeSprings& edge = lcc.info<1>(d);
+  CornerMechanics& corner = lcc.info(d);
   double edge_stiffness = settings.structural.stiffness;
   if (material) {
     edge_stiffness = own.edge_n_per_m;
@@ -137,10 +138,10 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
       edge_stiffness += face_share_of_edge(lcc, lcc.opposite<2>(d), *material).edge_n_per_m;
     }
   }
-  mechanics.edge = make_spring(settings.structural, edge_stiffness, edge_rest_length_m(lcc, d));
-  mechanics.edge_coupling = own.coupling_with_next_n_per_m;
+  edge.structural = make_spring(settings.structural, edge_stiffness, edge_rest_length_m(lcc, d));
+  corner.edge_coupling = own.coupling_with_next_n_per_m;
 
-  mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
+  edge.bending = StoredSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {
     Vertex_handle here = vertex_after_edge(lcc, d);
     Vertex_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
@@ -156,16 +157,16 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
             face_rest_area(lcc, e), static_cast<int>(lcc.darts_of_orbit<1>(e).size()),
             face_rest_area(lcc, o), static_cast<int>(lcc.darts_of_orbit<1>(o).size()));
       }
-      mechanics.bending =
+      edge.bending =
           make_spring(settings.bending, stiffness,
                       rest_distance(here->info().rest_position, across->info().rest_position));
     }
   }
 
-  mechanics.shear = DartSpring{SpringSlot::absent, 0, 0, 0};
+  corner.shear = StoredSpring{SpringSlot::absent, 0, 0, 0};
   if (lcc.darts_of_orbit<1>(d).size() == 4) {
     const double stiffness = material ? own.diagonal_n_per_m : settings.shear.stiffness;
-    mechanics.shear = make_spring(
+    corner.shear = make_spring(
         settings.shear, stiffness,
         rest_distance(rest_position(lcc, d), rest_position(lcc, lcc.next(lcc.next(d)))));
   }

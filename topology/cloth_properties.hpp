@@ -22,10 +22,13 @@ void assign_face_rest(ClothComplex& lcc, double areal_density_kg_per_m2);
 /// to each of its vertices, so the total is density x total rest area.
 void lump_masses(ClothComplex& lcc);
 
-/// Fills the three spring slots of every dart from `settings` and the material coordinates.
+/// Fills the spring slots of every edge and every dart from `settings` and the material
+/// coordinates.
 void assign_springs(ClothComplex& lcc, const SpringSettings& settings);
 
-/// Fills the three spring slots of one dart (see assign_springs).
+/// Fills the spring slots of the dart's edge (structural, bending) and of the dart itself (shear
+/// diagonal, coupling); see assign_springs. The edge's springs come out the same, to the bit,
+/// from either of its darts.
 void assign_dart_springs(ClothComplex& lcc, Dart_handle dart, const SpringSettings& settings);
 
 /// Sets the mass of `vertex` to its share of each incident face: sum of density x rest area /

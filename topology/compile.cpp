@@ -7,36 +7,36 @@ namespace {
 
 struct SpringRecord {
   int i, j;
-  const DartSpring* spring;
+  const StoredSpring* spring;
   SpringKind kind;
   Dart_handle dart;
 };
 
 int particle_of(const ClothComplex& lcc, Dart_const_handle dart) {
-  return lcc.vertex_attribute(dart)->info().particle_index;
+  return lcc.vertex_attribute(dart)->info().index_at_last_compile;
 }
 
 std::vector<SpringRecord> collect_springs(ClothComplex& lcc) {
   std::vector<SpringRecord> records;
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
-    const DartMechanics& m = lcc.info(d);
-    if (m.edge.slot == SpringSlot::present) {
-      records.push_back(
-          {particle_of(lcc, d), particle_of(lcc, lcc.next(d)), &m.edge, SpringKind::structural, d});
+    const EdgeSprings& edge = lcc.info<1>(d);
+    if (edge.structural.slot == SpringSlot::present) {
+      records.push_back({particle_of(lcc, d), particle_of(lcc, lcc.next(d)), &edge.structural,
+                         SpringKind::structural, d});
     }
-    if (m.bending.slot == SpringSlot::present) {
+    if (edge.bending.slot == SpringSlot::present) {
       const int here = particle_of(lcc, lcc.next(lcc.next(d)));
       const int across = particle_of(lcc, lcc.next(lcc.next(lcc.opposite<2>(d))));
-      records.push_back({here, across, &m.bending, SpringKind::bending, d});
+      records.push_back({here, across, &edge.bending, SpringKind::bending, d});
     }
   }
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     if (lcc.darts_of_orbit<1>(d).size() != 4) continue;
     for (Dart_handle corner : {Dart_handle(d), lcc.next(d)}) {
-      const DartMechanics& m = lcc.info(corner);
-      if (m.shear.slot != SpringSlot::present) continue;
+      const StoredSpring& shear = lcc.info(corner).shear;
+      if (shear.slot != SpringSlot::present) continue;
       records.push_back({particle_of(lcc, corner), particle_of(lcc, lcc.next(lcc.next(corner))),
-                         &m.shear, SpringKind::shear, corner});
+                         &shear, SpringKind::shear, corner});
     }
   }
   return records;
@@ -106,7 +106,7 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
   int index = 0;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v, ++index) {
     Particle& p = v->info();
-    p.particle_index = index;
+    p.index_at_last_compile = index;
     out.particle_vertices.push_back(v);
     model.mass[index] = p.mass;
     model.pinned[index] = p.pinned ? 1 : 0;

@@ -18,7 +18,7 @@ struct CompiledCloth {
 };
 
 /// Compiles `lcc`: one particle per vertex (numbered in container order, stored back as
-/// Particle::particle_index), one structural and one bending spring per edge whose slots are
+/// Particle::index_at_last_compile), one structural and one bending spring per edge whose slots are
 /// present, one shear spring per present quad diagonal, the faces as triangles (quads cut along
 /// the diagonal from their first dart). Reads positions and velocities into the state.
 CompiledCloth compile(ClothComplex& lcc, double time_s = 0.0);

@@ -7,12 +7,12 @@ IndexedMesh current_mesh(const ClothComplex& lcc) {
   mesh.vertices.resize(lcc.vertex_attributes().size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     const Point3& p = v->point();
-    mesh.vertices.at(v->info().particle_index) = Eigen::Vector3d(p.x(), p.y(), p.z());
+    mesh.vertices.at(v->info().index_at_last_compile) = Eigen::Vector3d(p.x(), p.y(), p.z());
   }
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     std::vector<int>& face = mesh.faces.emplace_back();
     for (auto c = lcc.darts_of_orbit<1>(d).begin(); c != lcc.darts_of_orbit<1>(d).end(); ++c) {
-      face.push_back(lcc.vertex_attribute(c)->info().particle_index);
+      face.push_back(lcc.vertex_attribute(c)->info().index_at_last_compile);
     }
   }
   return mesh;
@@ -22,7 +22,7 @@ std::vector<Eigen::Vector3d> rest_positions(const ClothComplex& lcc) {
   std::vector<Eigen::Vector3d> rest_m(lcc.vertex_attributes().size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     const Point3& r = v->info().rest_position;
-    rest_m.at(v->info().particle_index) = Eigen::Vector3d(r.x(), r.y(), r.z());
+    rest_m.at(v->info().index_at_last_compile) = Eigen::Vector3d(r.x(), r.y(), r.z());
   }
   return rest_m;
 }

@@ -46,6 +46,7 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   std::vector<Dart_handle> faces;
   auto cut = [&](Dart_handle from, Dart_handle to) {
     const Dart_handle new_edge = lcc.insert_cell_1_in_cell_2(from, to);
+    lcc.set_attribute<1>(new_edge, lcc.create_attribute<1>());  // CGAL gives a new edge none
     faces.push_back(new_edge);
     faces.push_back(lcc.opposite<2>(new_edge));
   };

@@ -16,7 +16,7 @@ struct SpringKindSettings {
 };
 
 /// Structural springs lie on every edge, shear springs on both diagonals of every quad, bending
-/// springs across every interior edge (see DartMechanics::bending). With a material, each kind's
+/// springs across every interior edge (see EdgeSprings::bending). With a material, each kind's
 /// stiffness comes from it (membrane_stiffness.hpp) and the kinds' own stiffness is unused.
 struct SpringSettings {
   SpringKindSettings structural;

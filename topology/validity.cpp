@@ -16,14 +16,9 @@ bool is_finite(const Vector3& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
-bool same_spring(const DartSpring& a, const DartSpring& b) {
-  return a.slot == b.slot && a.stiffness == b.stiffness && a.damping == b.damping &&
-         a.rest_length == b.rest_length;
-}
-
-std::string check_spring(const DartSpring& s, const char* name) {
+std::string check_spring(const StoredSpring& s, const char* name) {
   if (s.slot == SpringSlot::unassigned)
-    return std::string("a dart has an unassigned ") + name + " spring";
+    return std::string("an unassigned ") + name + " spring slot";
   if (s.slot == SpringSlot::absent) return {};
   if (!(s.rest_length > 0.0) || !std::isfinite(s.rest_length)) {
     return std::string("a ") + name + " spring has a non-positive rest length";
@@ -34,23 +29,35 @@ std::string check_spring(const DartSpring& s, const char* name) {
   return {};
 }
 
+void add_spring_problem(const StoredSpring& spring, const char* name,
+                        std::vector<std::string>& problems) {
+  if (std::string problem = check_spring(spring, name); !problem.empty()) {
+    problems.push_back(std::move(problem));
+  }
+}
+
 void check_darts(const ClothComplex& lcc, std::vector<std::string>& problems) {
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
     if (lcc.attribute<0>(d) == nullptr) problems.push_back("a dart has no vertex attribute");
+    if (lcc.attribute<1>(d) == nullptr) problems.push_back("a dart has no edge attribute");
     if (lcc.attribute<2>(d) == nullptr) problems.push_back("a dart has no face attribute");
-    const DartMechanics& m = lcc.info(d);
-    for (const auto& [spring, name] :
-         {std::pair{&m.edge, "structural"}, {&m.bending, "bending"}, {&m.shear, "shear"}}) {
-      if (std::string problem = check_spring(*spring, name); !problem.empty()) {
-        problems.push_back(std::move(problem));
-      }
-    }
-    if (!lcc.is_free<2>(d)) {
-      const DartMechanics& twin = lcc.info(lcc.opposite<2>(d));
-      if (!same_spring(m.edge, twin.edge) || !same_spring(m.bending, twin.bending)) {
-        problems.push_back("the two darts of an edge disagree on its springs");
-      }
-    }
+    add_spring_problem(lcc.info(d).shear, "shear", problems);
+  }
+}
+
+void check_edges(const ClothComplex& lcc, std::vector<std::string>& problems) {
+  std::size_t edges = 0;
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    ++edges;
+  }
+  if (edges != lcc.attributes<1>().size()) {
+    problems.push_back(std::to_string(lcc.attributes<1>().size()) + " edge attributes for " +
+                       std::to_string(edges) + " edges");
+  }
+  for (auto e = lcc.attributes<1>().begin(); e != lcc.attributes<1>().end(); ++e) {
+    if (e->dart() == nullptr) problems.push_back("an edge attribute is on no edge");
+    add_spring_problem(e->info().structural, "structural", problems);
+    add_spring_problem(e->info().bending, "bending", problems);
   }
 }
 
@@ -98,6 +105,7 @@ std::vector<std::string> validity_problems(const ClothComplex& lcc,
   std::vector<std::string> problems;
   if (!lcc.is_valid()) problems.push_back("CGAL's is_valid() fails");
   check_darts(lcc, problems);
+  check_edges(lcc, problems);
   check_vertices(lcc, problems);
   check_faces(lcc, problems);
   const double expected_kg = complex_expected_mass(lcc);

@@ -104,7 +104,7 @@ EffectiveMaterial measure_effective_material(ClothComplex& lcc, double thickness
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
     if (!lcc.is_free<2>(d)) continue;
     for (const Dart_handle end : {Dart_handle(d), lcc.next(d)}) {
-      const int p = lcc.vertex_attribute(end)->info().particle_index;
+      const int p = lcc.vertex_attribute(end)->info().index_at_last_compile;
       on_border[p] = prescribed[2 * p] = prescribed[2 * p + 1] = true;
     }
   }

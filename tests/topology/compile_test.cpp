@@ -25,12 +25,13 @@ TEST(Compile, RestLengthsMatchTheRestShapeAndBackMapsPointAtTheSprings) {
     EXPECT_NE(m.springs(s, 0), m.springs(s, 1));
     // the back-map's dart touches the spring's first particle
     const Dart_handle d = c.spring_darts[s];
-    const int origin = lcc.vertex_attribute(d)->info().particle_index;
-    const int after_edge = lcc.vertex_attribute(lcc.next(lcc.next(d)))->info().particle_index;
+    const int origin = lcc.vertex_attribute(d)->info().index_at_last_compile;
+    const int after_edge =
+        lcc.vertex_attribute(lcc.next(lcc.next(d)))->info().index_at_last_compile;
     EXPECT_TRUE(origin == m.springs(s, 0) || after_edge == m.springs(s, 0)) << "spring " << s;
   }
   for (int i = 0; i < m.particle_count(); ++i) {
-    EXPECT_EQ(c.particle_vertices[i]->info().particle_index, i);
+    EXPECT_EQ(c.particle_vertices[i]->info().index_at_last_compile, i);
     EXPECT_DOUBLE_EQ(m.mass[i], c.particle_vertices[i]->info().mass);
   }
 }

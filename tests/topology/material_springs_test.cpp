@@ -52,8 +52,10 @@ using DartStiffness = std::tuple<double, double, double, double>;  // edge, bend
 std::vector<DartStiffness> dart_stiffnesses(ClothComplex& lcc) {
   std::vector<DartStiffness> out;
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    const DartMechanics& m = lcc.info(d);
-    out.emplace_back(m.edge.stiffness, m.bending.stiffness, m.shear.stiffness, m.edge_coupling);
+    const EdgeSprings& edge = lcc.info<1>(d);
+    const CornerMechanics& corner = lcc.info(d);
+    out.emplace_back(edge.structural.stiffness, edge.bending.stiffness, corner.shear.stiffness,
+                     corner.edge_coupling);
   }
   return out;
 }

@@ -86,7 +86,7 @@ TEST_F(RefineTest, RepeatedPassesStopAtTheMinimumEdgeLengthAndTheParticleCap) {
   EXPECT_LT(passes, 50);
   expect_valid_and_mass_conserved();
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    EXPECT_GE(lcc.info(d).edge.rest_length, refinement.min_edge_length_m);
+    EXPECT_GE(lcc.info<1>(d).structural.rest_length, refinement.min_edge_length_m);
   }
 
   ClothComplex capped;
@@ -143,7 +143,7 @@ TEST_F(RefineTest, MaxEdgeLengthRefinesAFlatSheetAndCoarseningKeepsIt) {
   }
   expect_valid_and_mass_conserved();
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    EXPECT_LE(lcc.info(d).edge.rest_length, 0.1);
+    EXPECT_LE(lcc.info<1>(d).structural.rest_length, 0.1);
   }
   const std::size_t refined = lcc.vertex_attributes().size();
   EXPECT_GT(refined, 117u);

@@ -29,18 +29,28 @@ TEST_F(ValidityTest, ReportsNonPositiveMassAndTheMassBalance) {
 }
 
 TEST_F(ValidityTest, ReportsUnassignedSpringSlots) {
-  lcc.info(lcc.darts().begin()).bending = DartSpring{};
+  lcc.attributes<1>().begin()->info().bending = StoredSpring{};
+  lcc.info(lcc.darts().begin()).shear = StoredSpring{};
   EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("unassigned bending spring")));
+  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("unassigned shear spring")));
 }
 
-TEST_F(ValidityTest, ReportsTwinDartsThatDisagree) {
+TEST_F(ValidityTest, ReportsAnEdgeWithoutItsAttributeAndAnOrphanedOne) {
+  lcc.set_attribute<1>(lcc.darts().begin(), nullptr);
+  const auto problems = validity_problems(lcc);
+  EXPECT_THAT(problems, Contains(HasSubstr("a dart has no edge attribute")));
+  EXPECT_THAT(problems, Contains(HasSubstr("edge attributes for")));
+}
+
+TEST_F(ValidityTest, EveryEdgeHasOneAttributeSharedByItsDarts) {
+  int interior = 0;
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
-    if (!lcc.is_free<2>(d)) {
-      lcc.info(d).edge.stiffness *= 2.0;
-      break;
-    }
+    if (lcc.is_free<2>(d)) continue;
+    ++interior;
+    EXPECT_EQ(lcc.attribute<1>(d), lcc.attribute<1>(lcc.opposite<2>(d)));
   }
-  EXPECT_THAT(validity_problems(lcc), Contains(HasSubstr("disagree")));
+  EXPECT_GT(interior, 0);
+  EXPECT_TRUE(validity_problems(lcc).empty());
 }
 
 TEST_F(ValidityTest, ReportsAStaleRestArea) {
