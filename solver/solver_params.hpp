@@ -37,8 +37,8 @@ struct Environment {
 
 /// Linear solve of the implicit integrator.
 struct ImplicitOptions {
-  /// relative residual |b - A dv| / |b| of the conjugate gradient, dimensionless. 1e-5 leaves the
-  /// curtain demo's energy unchanged to 1e-7 relative against 1e-8, in 40% less time.
+  /// relative residual |b - A dv| / |b| at which the conjugate gradient stops, dimensionless, > 0;
+  /// 1e-5: tighter only costs time on the curtain (docs/benchmarks.md, solver defaults).
   double cg_tolerance = 1e-5;
   int cg_max_iterations = 1000;  ///< a step whose solve has not converged by then is NotConverged
 };
@@ -68,14 +68,10 @@ struct ProjectiveDynamicsOptions {
   /// iterate relative to the step's displacement), dimensionless; 0 runs exactly `iterations`.
   /// A step that has not met a positive tolerance after `iterations` returns not_converged.
   double tolerance = 0.0;
-  /// Chebyshev: estimate rho of the spectral radius of the (relaxed) Jacobi iteration, in [0, 1).
-  /// Wang 2015 measures it per scene from the convergence of plain Jacobi PD; it is close to 1 for
-  /// stiff cloth with many iterations per step. Inside PD, whose local step changes the right-hand
-  /// side between sweeps, too large a rho diverges: a hanging cloth (11 x 11, 500 N/m,
-  /// h = 10 ms, 10 iterations) is stable up to 0.98 and diverges at 0.99, hence 0.95.
-  /// 0 = Gershgorin's bound max_i sum_j s_ij / (m_i/h^2 + sum_j s_ij), relaxed as
-  /// 1 - gamma (1 - bound): an upper bound, tight on grids, for a linear solve (any rho < 1
-  /// converges on a linear system), too large for stiff cloth inside PD.
+  /// Chebyshev: estimate rho of the spectral radius of the (relaxed) Jacobi iteration, in [0, 1),
+  /// dimensionless; 0 = Gershgorin's bound max_i sum_j s_ij / (m_i/h^2 + sum_j s_ij), relaxed as
+  /// 1 - gamma (1 - bound): an upper bound, too large inside PD for stiff cloth. 0.95 keeps a
+  /// margin below the rho at which PD diverges (docs/benchmarks.md, solver defaults).
   double chebyshev_spectral_radius = 0.95;
   /// Chebyshev: under-relaxation gamma of each Jacobi sweep, p = gamma p_jacobi + (1 - gamma) p,
   /// in (0, 1]; damps the highest-frequency modes that Jacobi alone flips (Wang 2015 under-relaxes

@@ -68,6 +68,9 @@ ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
   o.tolerance = pd.number_or("tolerance", o.tolerance, between(0.0, 1.0, ""));
   o.chebyshev_spectral_radius = pd.number_or("chebyshev_spectral_radius",
                                              o.chebyshev_spectral_radius, between(0.0, 0.9999, ""));
+  o.chebyshev_relaxation = pd.number_or("chebyshev_relaxation", o.chebyshev_relaxation,
+                                        {0.0, 1.0, true, "a number in (0, 1]"});
+  o.chebyshev_delay = pd.integer_or("chebyshev_delay", o.chebyshev_delay, 0, 100000);
   pd.finish();
   return o;
 }

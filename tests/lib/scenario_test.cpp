@@ -119,6 +119,39 @@ TEST(Scenario, ReadsProjectiveDynamicsOptions) {
               HasSubstr("simulation.pd.global_solver: expected one of \"direct\", \"jacobi\""));
 }
 
+TEST(Scenario, ReadsTheChebyshevOptions) {
+  const ProjectiveDynamicsOptions defaults;
+  const Scenario plain = parse_scenario(minimal, "dir/s.json");
+  EXPECT_DOUBLE_EQ(plain.solver.pd.chebyshev_relaxation, defaults.chebyshev_relaxation);
+  EXPECT_EQ(plain.solver.pd.chebyshev_delay, defaults.chebyshev_delay);
+  const Scenario s = parse_scenario(
+      minimal, "dir/s.json",
+      {R"(simulation.pd={"global_solver": "chebyshev", "chebyshev_spectral_radius": 0.9,
+                         "chebyshev_relaxation": 0.8, "chebyshev_delay": 5})"});
+  EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_spectral_radius, 0.9);
+  EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_relaxation, 0.8);
+  EXPECT_EQ(s.solver.pd.chebyshev_delay, 5);
+  EXPECT_DOUBLE_EQ(parse_scenario(minimal, "dir/s.json", {"simulation.pd.chebyshev_relaxation=1"})
+                       .solver.pd.chebyshev_relaxation,
+                   1.0);
+}
+
+TEST(Scenario, ChebyshevOptionsOutOfRangeAreNamed) {
+  EXPECT_EQ(with("simulation.pd.chebyshev_relaxation", "0"),
+            "dir/s.json: simulation.pd.chebyshev_relaxation: expected a number in (0, 1], got 0");
+  EXPECT_THAT(with("simulation.pd.chebyshev_relaxation", "1.5"),
+              HasSubstr("simulation.pd.chebyshev_relaxation: expected a number in (0, 1]"));
+  EXPECT_THAT(with("simulation.pd.chebyshev_relaxation", "\"high\""),
+              HasSubstr("simulation.pd.chebyshev_relaxation: expected a number in (0, 1]"));
+  EXPECT_EQ(with("simulation.pd.chebyshev_delay", "-1"),
+            "dir/s.json: simulation.pd.chebyshev_delay: expected an integer from 0 to 100000, "
+            "got -1");
+  EXPECT_THAT(with("simulation.pd.chebyshev_delay", "2.5"),
+              HasSubstr("simulation.pd.chebyshev_delay: expected an integer from 0 to 100000"));
+  EXPECT_THAT(with("simulation.pd.chebyshev_delay", "100001"),
+              HasSubstr("simulation.pd.chebyshev_delay: expected an integer from 0 to 100000"));
+}
+
 TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
   std::string text = minimal;
   text.replace(text.find("\"density\""), 9, "\"densty\"");
