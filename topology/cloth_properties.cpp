@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "topology/eigen_conversions.hpp"
 #include "topology/membrane_stiffness.hpp"
 
 namespace tissu {
@@ -26,8 +27,7 @@ DartSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
 }
 
 Eigen::Vector3d rest_vector(const ClothComplex& lcc, Dart_const_handle dart) {
-  const Point3& p = rest_position(lcc, dart);
-  return {p.x(), p.y(), p.z()};
+  return to_eigen(rest_position(lcc, dart));
 }
 
 /// What the face of `dart` gives the springs along the dart's edge and on the dart's diagonal
@@ -112,8 +112,7 @@ double edge_rest_length_m(const ClothComplex& lcc, Dart_const_handle dart) {
 
 Vertex_handle nearest_vertex(ClothComplex& lcc, const Eigen::Vector3d& rest_point_m) {
   const auto distance2 = [&](Vertex_handle v) {
-    const Point3& r = v->info().rest_position;
-    return (Eigen::Vector3d(r.x(), r.y(), r.z()) - rest_point_m).squaredNorm();
+    return (to_eigen(v->info().rest_position) - rest_point_m).squaredNorm();
   };
   Vertex_handle nearest = lcc.vertex_attributes().begin();
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {

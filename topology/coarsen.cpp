@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "topology/cloth_properties.hpp"
+#include "topology/eigen_conversions.hpp"
 #include "topology/local_update.hpp"
 #include "topology/refine.hpp"
 #include "topology/validity.hpp"
@@ -89,8 +90,7 @@ Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (Vertex_handle v : vertices) {
     if (v->info().pinned) continue;
-    const Vector3& vel = v->info().velocity;
-    p += v->info().mass * Eigen::Vector3d(vel.x(), vel.y(), vel.z());
+    p += v->info().mass * to_eigen(v->info().velocity);
   }
   return p;
 }
@@ -111,8 +111,7 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
   if (free_mass_kg > 0.0) {
     const Eigen::Vector3d dv = (momentum_before - free_momentum(b.patch)) / free_mass_kg;
     for (Vertex_handle v : b.patch) {
-      if (!v->info().pinned)
-        v->info().velocity = v->info().velocity + Vector3(dv.x(), dv.y(), dv.z());
+      if (!v->info().pinned) v->info().velocity = v->info().velocity + to_vector(dv);
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "topology/cloth_properties.hpp"
+#include "topology/eigen_conversions.hpp"
 #include "topology/face_strain.hpp"
 #include "topology/local_update.hpp"
 #include "topology/polyline.hpp"
@@ -17,10 +18,6 @@
 
 namespace tissu {
 namespace {
-
-Eigen::Vector3d to_eigen(const Point3& p) {
-  return {p.x(), p.y(), p.z()};
-}
 
 Eigen::Vector3d rest_of(Vertex_handle v) {
   return to_eigen(v->info().rest_position);
