@@ -4,8 +4,10 @@
 
 #include <cassert>
 
-#include "topology/cloth_properties.hpp"
 #include "topology/eigen_conversions.hpp"
+#include "topology/mass_lumping.hpp"
+#include "topology/rest_geometry.hpp"
+#include "topology/spring_assignment.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/local_update.hpp"
 #include "topology/refine.hpp"

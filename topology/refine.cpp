@@ -4,8 +4,9 @@
 #include <cmath>
 #include <set>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/face_strain.hpp"
+#include "topology/rest_geometry.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {

@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/face_strain.hpp"
 #include "topology/local_update.hpp"

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "topology/build_cloth_complex.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/grid_mesh.hpp"
+#include "topology/mass_lumping.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu::test {

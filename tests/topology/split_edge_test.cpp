@@ -7,7 +7,6 @@
 #include "cloth_test_support.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "topology/apply_pins.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/compile.hpp"
 #include "topology/validity.hpp"
 

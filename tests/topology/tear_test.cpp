@@ -8,7 +8,6 @@
 
 #include "cloth_test_support.hpp"
 #include "solver/pd/particle_coloring.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
 #include "topology/refine.hpp"
