@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "topology/complex_navigation.hpp"
 #include "topology/eigen_conversions.hpp"
@@ -13,18 +15,21 @@
 namespace tissu {
 namespace {
 
-/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners.
+/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners, in
+/// handles of the complex's constness (complex_navigation.hpp): the ones undo() edits through.
+template <MaybeConstClothComplex Complex>
 struct Bisection {
-  Vertex_handle middle;
-  std::vector<Dart_handle> cut_edges;     ///< darts from the middle to each corner
-  std::vector<Dart_handle> corner_faces;  ///< a dart of each parent face, not touching the middle
-  std::vector<Vertex_handle> patch;       ///< the parent faces' vertices, middle excluded
-  double parent_edge_m = 0.0;             ///< rest length of the edge (a, b) undoing restores
+  Vertex_handle_of<Complex> middle;
+  std::vector<Dart_handle_of<Complex>> cut_edges;  ///< darts from the middle to each corner
+  /// a dart of each parent face, not touching the middle
+  std::vector<Dart_handle_of<Complex>> corner_faces;
+  std::vector<Vertex_handle_of<Complex>> patch;  ///< the parent faces' vertices, middle excluded
+  double parent_edge_m = 0.0;  ///< rest length of the edge (a, b) undoing restores
 };
 
 /// Whether (a, b) is the edge whose split made `m`: m is its midpoint and a or b is the end
 /// recorded at the split (the two diagonals of a grid cell share their midpoint).
-bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex_handle b) {
+bool is_split_edge_of(Vertex_const_handle m, Vertex_const_handle a, Vertex_const_handle b) {
   const Point3& ra = a->info().rest_position;
   const Point3& rb = b->info().rest_position;
   const double tolerance_m2 = 1e-20 * CGAL::squared_distance(ra, rb);
@@ -35,15 +40,19 @@ bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex
 }
 
 /// The bisection that created `m`, if its neighbourhood is still exactly that.
-std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
-  const std::vector<Dart_handle> out = darts_leaving(lcc, m);
+template <MaybeConstClothComplex Complex>
+std::optional<Bisection<Complex>> bisection_at(Complex& lcc, Vertex_handle_of<Complex> m) {
+  using Dart = Dart_handle_of<Complex>;
+  const std::vector<Dart> out = darts_leaving(lcc, m);
   // neighbours: the far end of each outgoing dart, plus, on the boundary, the origin of the dart
   // that ends at m without a twin
-  std::vector<std::pair<Vertex_handle, Dart_handle>> neighbours;  // with the dart m -> it, if any
-  for (Dart_handle d : out) {
+  std::vector<std::pair<Vertex_handle_of<Complex>, Dart>> neighbours;  // with the dart m -> it
+  for (Dart d : out) {
     neighbours.emplace_back(lcc.vertex_attribute(lcc.next(d)), d);
-    const Dart_handle incoming = lcc.previous(d);
-    if (lcc.is_free<2>(incoming)) neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
+    const Dart incoming = lcc.previous(d);
+    if (lcc.template is_free<2>(incoming)) {
+      neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
+    }
   }
   const bool interior = neighbours.size() == 4 && out.size() == 4;
   const bool boundary = neighbours.size() == 3 && out.size() == 2;
@@ -51,14 +60,14 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   for (std::size_t i = 0; i < neighbours.size(); ++i) {
     for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
       if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
-      Bisection b{m, {}, {}, {}, 0.0};
+      Bisection<Complex> b{m, {}, {}, {}, 0.0};
       b.parent_edge_m = std::sqrt(CGAL::squared_distance(
           neighbours[i].first->info().rest_position, neighbours[j].first->info().rest_position));
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         b.patch.push_back(neighbours[k].first);
         if (k == i || k == j) continue;
-        const Dart_handle to_corner = neighbours[k].second;
-        if (to_corner == nullptr || lcc.is_free<2>(to_corner)) return std::nullopt;
+        const Dart to_corner = neighbours[k].second;
+        if (to_corner == nullptr || lcc.template is_free<2>(to_corner)) return std::nullopt;
         b.cut_edges.push_back(to_corner);
         // in the face of m -> corner, the dart after it leaves the corner away from m
         b.corner_faces.push_back(lcc.next(to_corner));
@@ -69,9 +78,10 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   return std::nullopt;
 }
 
-bool calm_around(ClothComplex& lcc, const Bisection& b, const RefinementOptions& o,
+/// Whether every edge of the faces around `middle` is below `hysteresis` x each threshold of `o`.
+bool calm_around(const ClothComplex& lcc, Vertex_const_handle middle, const RefinementOptions& o,
                  double hysteresis) {
-  for (Dart_handle d : darts_leaving(lcc, b.middle)) {
+  for (Dart_const_handle d : darts_leaving(lcc, middle)) {
     for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
       if (o.strain_threshold > 0.0 && edge_strain(lcc, e) >= hysteresis * o.strain_threshold) {
         return false;
@@ -95,7 +105,7 @@ Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   return p;
 }
 
-void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
+void undo(ClothComplex& lcc, const Bisection<ClothComplex>& b, const SpringSettings& settings) {
   std::vector<Vertex_handle> with_middle = b.patch;
   with_middle.push_back(b.middle);
   const Eigen::Vector3d momentum_before = free_momentum(with_middle);
@@ -132,8 +142,8 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
     return a->info().level > b->info().level;
   });
   for (Vertex_handle v : created) {
-    const std::optional<Bisection> b = bisection_at(lcc, v);
-    if (!b || !calm_around(lcc, *b, options, hysteresis)) continue;
+    const std::optional<Bisection<ClothComplex>> b = bisection_at(lcc, v);
+    if (!b || !calm_around(lcc, b->middle, options, hysteresis)) continue;
     if (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m) continue;
     undo(lcc, *b, settings);
     ++report.merges;

@@ -1,5 +1,7 @@
 #include "topology/mass_lumping.hpp"
 
+#include <utility>
+
 #include "topology/complex_navigation.hpp"
 
 namespace tissu {
@@ -12,7 +14,7 @@ void lump_masses(ClothComplex& lcc) {
 
 void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex) {
   double mass_kg = 0.0;
-  for (Dart_handle d : darts_leaving(lcc, vertex)) {
+  for (Dart_const_handle d : darts_leaving(std::as_const(lcc), vertex)) {
     const FaceRest& face = lcc.info<2>(d);
     mass_kg += face.areal_density * face.rest_area / lcc.darts_of_orbit<1>(d).size();
   }

@@ -93,8 +93,8 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
 
   mechanics.bending = DartSpring{SpringSlot::absent, 0, 0, 0};
   if (!lcc.is_free<2>(d)) {
-    Vertex_handle here = vertex_after_edge(lcc, d);
-    Vertex_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
+    const Vertex_const_handle here = vertex_after_edge(lcc, d);
+    const Vertex_const_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
     if (here != across) {
       double stiffness = settings.bending.stiffness;
       if (material) {
