@@ -4,6 +4,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "topology/eigen_conversions.hpp"
+
 namespace tissu {
 namespace {
 
@@ -17,8 +19,7 @@ struct Candidate {
 std::vector<Candidate> candidates_of(ClothComplex& lcc, const ClothFrame& frame) {
   std::vector<Candidate> out;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Point3& p = v->info().rest_position;
-    const Eigen::Vector3d rest(p.x(), p.y(), p.z());
+    const Eigen::Vector3d rest = to_eigen(v->info().rest_position);
     out.push_back({v, rest.dot(frame.u_axis), rest.dot(frame.v_axis), rest});
   }
   return out;
@@ -101,8 +102,7 @@ int apply_pins(ClothComplex& lcc, const std::vector<PinSelector>& selectors,
   for (std::size_t k = 0; k < selectors.size(); ++k) {
     for (Vertex_handle v : select(all, selectors[k], "pins[" + std::to_string(k) + "]")) {
       v->info().pinned = true;
-      v->info().velocity =
-          Vector3(selectors[k].velocity.x(), selectors[k].velocity.y(), selectors[k].velocity.z());
+      v->info().velocity = to_vector(selectors[k].velocity);
     }
   }
   return static_cast<int>(std::count_if(

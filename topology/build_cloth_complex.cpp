@@ -4,7 +4,10 @@
 
 #include <cassert>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/eigen_conversions.hpp"
+#include "topology/mass_lumping.hpp"
+#include "topology/rest_geometry.hpp"
+#include "topology/spring_assignment.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -24,8 +27,7 @@ void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     if (builder_id[v] < 0) continue;
     builder_id[v] = next_id++;
-    const Eigen::Vector3d& p = mesh.vertices[v];
-    Vertex_handle vh = builder.add_vertex(Point3(p.x(), p.y(), p.z()));
+    Vertex_handle vh = builder.add_vertex(to_point(mesh.vertices[v]));
     vh->info().rest_position = vh->point();
     vh->info().source_index = static_cast<int>(v);
   }
@@ -55,8 +57,7 @@ void place_particles(const std::vector<Eigen::Vector3d>& positions, ClothComplex
       throw std::invalid_argument("place_particles: no position for input vertex " +
                                   std::to_string(source));
     }
-    const Eigen::Vector3d& p = positions[source];
-    lcc.point_of_vertex_attribute(v) = Point3(p.x(), p.y(), p.z());
+    lcc.point_of_vertex_attribute(v) = to_point(positions[source]);
   }
 }
 

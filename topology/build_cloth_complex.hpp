@@ -11,7 +11,8 @@ namespace tissu {
 /// Replaces `lcc` by the faces of `mesh`, sewn along shared edges. Positions are the mesh's;
 /// material coordinates equal them (the mesh is its own rest shape); velocities are zero. Each
 /// particle keeps its mesh vertex id as source_index; vertices no face uses are left out. Rest
-/// areas, masses and springs are then assigned (see cloth_properties.hpp).
+/// areas, masses and springs are then assigned (rest_geometry.hpp, mass_lumping.hpp,
+/// spring_assignment.hpp).
 /// Throws MeshError when validate_indexed_mesh rejects the mesh.
 void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2,
                          const SpringSettings& springs, ClothComplex& lcc);

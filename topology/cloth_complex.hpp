@@ -89,7 +89,9 @@ using ClothComplex = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3, Cloth
 using Dart_handle = ClothComplex::Dart_handle;
 using Dart_const_handle = ClothComplex::Dart_const_handle;
 using Vertex_handle = ClothComplex::Vertex_attribute_handle;
+using Vertex_const_handle = ClothComplex::Vertex_attribute_const_handle;
 using Edge_handle = ClothComplex::Attribute_handle<1>::type;
 using Face_handle = ClothComplex::Attribute_handle<2>::type;
+using Face_const_handle = ClothComplex::Attribute_const_handle<2>::type;
 
 }  // namespace tissu

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
+#include <vector>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
+#include "topology/eigen_conversions.hpp"
 #include "topology/local_update.hpp"
 #include "topology/refine.hpp"
 #include "topology/validity.hpp"
@@ -12,18 +15,21 @@
 namespace tissu {
 namespace {
 
-/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners.
+/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners, in
+/// handles of the complex's constness (complex_navigation.hpp): the ones undo() edits through.
+template <MaybeConstClothComplex Complex>
 struct Bisection {
-  Vertex_handle middle;
-  std::vector<Dart_handle> cut_edges;     ///< darts from the middle to each corner
-  std::vector<Dart_handle> corner_faces;  ///< a dart of each parent face, not touching the middle
-  std::vector<Vertex_handle> patch;       ///< the parent faces' vertices, middle excluded
-  double parent_edge_m = 0.0;             ///< rest length of the edge (a, b) undoing restores
+  Vertex_handle_of<Complex> middle;
+  std::vector<Dart_handle_of<Complex>> cut_edges;  ///< darts from the middle to each corner
+  /// a dart of each parent face, not touching the middle
+  std::vector<Dart_handle_of<Complex>> corner_faces;
+  std::vector<Vertex_handle_of<Complex>> patch;  ///< the parent faces' vertices, middle excluded
+  double parent_edge_m = 0.0;  ///< rest length of the edge (a, b) undoing restores
 };
 
 /// Whether (a, b) is the edge whose split made `m`: m is its midpoint and a or b is the end
 /// recorded at the split (the two diagonals of a grid cell share their midpoint).
-bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex_handle b) {
+bool is_split_edge_of(Vertex_const_handle m, Vertex_const_handle a, Vertex_const_handle b) {
   const Point3& ra = a->info().rest_position;
   const Point3& rb = b->info().rest_position;
   const double tolerance_m2 = 1e-20 * CGAL::squared_distance(ra, rb);
@@ -34,15 +40,19 @@ bool is_split_edge_of(const Vertex_handle m, const Vertex_handle a, const Vertex
 }
 
 /// The bisection that created `m`, if its neighbourhood is still exactly that.
-std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
-  const std::vector<Dart_handle> out = darts_leaving(lcc, m);
+template <MaybeConstClothComplex Complex>
+std::optional<Bisection<Complex>> bisection_at(Complex& lcc, Vertex_handle_of<Complex> m) {
+  using Dart = Dart_handle_of<Complex>;
+  const std::vector<Dart> out = darts_leaving(lcc, m);
   // neighbours: the far end of each outgoing dart, plus, on the boundary, the origin of the dart
   // that ends at m without a twin
-  std::vector<std::pair<Vertex_handle, Dart_handle>> neighbours;  // with the dart m -> it, if any
-  for (Dart_handle d : out) {
+  std::vector<std::pair<Vertex_handle_of<Complex>, Dart>> neighbours;  // with the dart m -> it
+  for (Dart d : out) {
     neighbours.emplace_back(lcc.vertex_attribute(lcc.next(d)), d);
-    const Dart_handle incoming = lcc.previous(d);
-    if (lcc.is_free<2>(incoming)) neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
+    const Dart incoming = lcc.previous(d);
+    if (lcc.template is_free<2>(incoming)) {
+      neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
+    }
   }
   const bool interior = neighbours.size() == 4 && out.size() == 4;
   const bool boundary = neighbours.size() == 3 && out.size() == 2;
@@ -50,14 +60,14 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   for (std::size_t i = 0; i < neighbours.size(); ++i) {
     for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
       if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
-      Bisection b{m, {}, {}, {}, 0.0};
+      Bisection<Complex> b{m, {}, {}, {}, 0.0};
       b.parent_edge_m = std::sqrt(CGAL::squared_distance(
           neighbours[i].first->info().rest_position, neighbours[j].first->info().rest_position));
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         b.patch.push_back(neighbours[k].first);
         if (k == i || k == j) continue;
-        const Dart_handle to_corner = neighbours[k].second;
-        if (to_corner == nullptr || lcc.is_free<2>(to_corner)) return std::nullopt;
+        const Dart to_corner = neighbours[k].second;
+        if (to_corner == nullptr || lcc.template is_free<2>(to_corner)) return std::nullopt;
         b.cut_edges.push_back(to_corner);
         // in the face of m -> corner, the dart after it leaves the corner away from m
         b.corner_faces.push_back(lcc.next(to_corner));
@@ -68,9 +78,10 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   return std::nullopt;
 }
 
-bool calm_around(ClothComplex& lcc, const Bisection& b, const RefinementOptions& o,
+/// Whether every edge of the faces around `middle` is below `hysteresis` x each threshold of `o`.
+bool calm_around(const ClothComplex& lcc, Vertex_const_handle middle, const RefinementOptions& o,
                  double hysteresis) {
-  for (Dart_handle d : darts_leaving(lcc, b.middle)) {
+  for (Dart_const_handle d : darts_leaving(lcc, middle)) {
     for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
       if (o.strain_threshold > 0.0 && edge_strain(lcc, e) >= hysteresis * o.strain_threshold) {
         return false;
@@ -89,13 +100,12 @@ Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (Vertex_handle v : vertices) {
     if (v->info().pinned) continue;
-    const Vector3& vel = v->info().velocity;
-    p += v->info().mass * Eigen::Vector3d(vel.x(), vel.y(), vel.z());
+    p += v->info().mass * to_eigen(v->info().velocity);
   }
   return p;
 }
 
-void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
+void undo(ClothComplex& lcc, const Bisection<ClothComplex>& b, const SpringSettings& settings) {
   std::vector<Vertex_handle> with_middle = b.patch;
   with_middle.push_back(b.middle);
   const Eigen::Vector3d momentum_before = free_momentum(with_middle);
@@ -120,8 +130,7 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
   if (free_mass_kg > 0.0) {
     const Eigen::Vector3d dv = (momentum_before - free_momentum(b.patch)) / free_mass_kg;
     for (Vertex_handle v : b.patch) {
-      if (!v->info().pinned)
-        v->info().velocity = v->info().velocity + Vector3(dv.x(), dv.y(), dv.z());
+      if (!v->info().pinned) v->info().velocity = v->info().velocity + to_vector(dv);
     }
   }
 }
@@ -142,8 +151,8 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
     return a->info().level > b->info().level;
   });
   for (Vertex_handle v : created) {
-    const std::optional<Bisection> b = bisection_at(lcc, v);
-    if (!b || !calm_around(lcc, *b, options, hysteresis)) continue;
+    const std::optional<Bisection<ClothComplex>> b = bisection_at(lcc, v);
+    if (!b || !calm_around(lcc, b->middle, options, hysteresis)) continue;
     if (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m) continue;
     undo(lcc, *b, settings);
     ++report.merges;

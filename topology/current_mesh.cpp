@@ -1,13 +1,14 @@
 #include "topology/current_mesh.hpp"
 
+#include "topology/eigen_conversions.hpp"
+
 namespace tissu {
 
 IndexedMesh current_mesh(const ClothComplex& lcc) {
   IndexedMesh mesh;
   mesh.vertices.resize(lcc.vertex_attributes().size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Point3& p = v->point();
-    mesh.vertices.at(v->info().index_at_last_compile) = Eigen::Vector3d(p.x(), p.y(), p.z());
+    mesh.vertices.at(v->info().index_at_last_compile) = to_eigen(v->point());
   }
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     std::vector<int>& face = mesh.faces.emplace_back();
@@ -21,8 +22,7 @@ IndexedMesh current_mesh(const ClothComplex& lcc) {
 std::vector<Eigen::Vector3d> rest_positions(const ClothComplex& lcc) {
   std::vector<Eigen::Vector3d> rest_m(lcc.vertex_attributes().size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Point3& r = v->info().rest_position;
-    rest_m.at(v->info().index_at_last_compile) = Eigen::Vector3d(r.x(), r.y(), r.z());
+    rest_m.at(v->info().index_at_last_compile) = to_eigen(v->info().rest_position);
   }
   return rest_m;
 }

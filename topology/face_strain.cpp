@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/rest_geometry.hpp"
 
 namespace tissu {
 

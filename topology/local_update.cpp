@@ -2,7 +2,9 @@
 
 #include <set>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/mass_lumping.hpp"
+#include "topology/rest_geometry.hpp"
+#include "topology/spring_assignment.hpp"
 
 namespace tissu {
 

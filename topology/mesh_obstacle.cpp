@@ -3,27 +3,20 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/Geometry>
 #include <map>
 #include <utility>
 #include <vector>
 
+#include "topology/eigen_conversions.hpp"
+
 namespace tissu {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Triangles = std::vector<Kernel::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Kernel::Point_3 to_point(const Eigen::Vector3d& x) {
-  return {x.x(), x.y(), x.z()};
-}
-Eigen::Vector3d to_vector(const Kernel::Point_3& p) {
-  return {p.x(), p.y(), p.z()};
-}
 
 /// Whether every edge of the triangles is shared by exactly two of them.
 bool is_closed(const IndexedMesh& triangles) {
@@ -54,10 +47,10 @@ class MeshSurface final : public SurfaceQuery {
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
     const auto [closest, triangle] = m_tree.closest_point_and_primitive(to_point(x_m));
-    const Eigen::Vector3d offset = x_m - to_vector(closest);
-    const Eigen::Vector3d a = to_vector(triangle->vertex(0));
+    const Eigen::Vector3d offset = x_m - to_eigen(closest);
+    const Eigen::Vector3d a = to_eigen(triangle->vertex(0));
     const Eigen::Vector3d face_normal =
-        (to_vector(triangle->vertex(1)) - a).cross(to_vector(triangle->vertex(2)) - a).normalized();
+        (to_eigen(triangle->vertex(1)) - a).cross(to_eigen(triangle->vertex(2)) - a).normalized();
     const double gap_m = offset.norm();
     if (!(gap_m > 1e-12)) return {0.0, face_normal};
     const Eigen::Vector3d away = offset / gap_m;

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <set>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/face_strain.hpp"
+#include "topology/rest_geometry.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {
@@ -18,17 +19,21 @@ Vector3 face_normal(const ClothComplex& lcc, Dart_const_handle d) {
   return CGAL::cross_product(b - a, c - a);
 }
 
-/// The dart of the longest rest-space edge of the face of `d`.
-Dart_handle longest_edge(ClothComplex& lcc, Dart_handle d) {
-  Dart_handle best = d;
-  for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
+/// The dart of the longest rest-space edge of the face of `d` (the first in the face's order from
+/// `d` among equally long ones), of the complex's constness (complex_navigation.hpp): the edge to
+/// bisect.
+template <MaybeConstClothComplex Complex>
+Dart_handle_of<Complex> longest_edge(Complex& lcc, Dart_handle_of<Complex> d) {
+  Dart_handle_of<Complex> best = d;
+  for (auto e = lcc.template darts_of_orbit<1>(d).begin();
+       e != lcc.template darts_of_orbit<1>(d).end(); ++e) {
     if (edge_rest_length_m(lcc, e) > edge_rest_length_m(lcc, best)) best = e;
   }
   return best;
 }
 
 /// One dart per edge, the same whichever dart of the edge is given.
-Dart_handle edge_key(ClothComplex& lcc, Dart_handle d) {
+Dart_const_handle edge_key(const ClothComplex& lcc, Dart_const_handle d) {
   return lcc.is_free<2>(d) ? d : std::min(d, lcc.opposite<2>(d));
 }
 
@@ -64,7 +69,7 @@ using SplitQueue = std::vector<std::pair<Dart_handle, Vertex_handle>>;
 /// Queues the longest rest-space edge of the triangle of `side`, once per edge, if it is at least
 /// twice `min_edge_length_m`.
 void queue_longest_edge(ClothComplex& lcc, Dart_handle side, double min_edge_length_m,
-                        std::set<Dart_handle>& queued, SplitQueue& queue) {
+                        std::set<Dart_const_handle>& queued, SplitQueue& queue) {
   const Dart_handle longest = longest_edge(lcc, side);
   if (edge_rest_length_m(lcc, longest) >= 2.0 * min_edge_length_m &&
       queued.insert(edge_key(lcc, longest)).second) {
@@ -109,7 +114,7 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
 int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
                          int max_particles, const SpringSettings& settings) {
   SplitQueue to_split;
-  std::set<Dart_handle> queued;
+  std::set<Dart_const_handle> queued;
   for (Dart_handle d : darts_leaving(lcc, vertex)) {
     queue_longest_edge(lcc, d, min_edge_length_m, queued, to_split);
   }
@@ -122,7 +127,7 @@ RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
   // the longest edge of each triangle next to an edge over a threshold, in traversal order so
   // that runs are reproducible
   SplitQueue to_split;
-  std::set<Dart_handle> queued;
+  std::set<Dart_const_handle> queued;
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     if (!over_threshold(lcc, d, options)) continue;
     ++report.candidate_edges;

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <stdexcept>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/local_update.hpp"
 #include "topology/validity.hpp"
 

@@ -8,7 +8,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
+#include "topology/eigen_conversions.hpp"
 #include "topology/face_strain.hpp"
 #include "topology/local_update.hpp"
 #include "topology/polyline.hpp"
@@ -18,11 +19,7 @@
 namespace tissu {
 namespace {
 
-Eigen::Vector3d to_eigen(const Point3& p) {
-  return {p.x(), p.y(), p.z()};
-}
-
-Eigen::Vector3d rest_of(Vertex_handle v) {
+Eigen::Vector3d rest_of(Vertex_const_handle v) {
   return to_eigen(v->info().rest_position);
 }
 
@@ -51,8 +48,8 @@ double tearing_strain_of(const TearingOptions& o, const Eigen::Vector3d& a_m,
 }
 
 /// Whether every edge around `v` has a face on both sides.
-bool fan_is_closed(ClothComplex& lcc, Vertex_handle v) {
-  for (Dart_handle d : darts_leaving(lcc, v)) {
+bool fan_is_closed(const ClothComplex& lcc, Vertex_const_handle v) {
+  for (Dart_const_handle d : darts_leaving(lcc, v)) {
     if (lcc.is_free<2>(d) || lcc.is_free<2>(lcc.previous(d))) return false;
   }
   return true;
@@ -61,11 +58,11 @@ bool fan_is_closed(ClothComplex& lcc, Vertex_handle v) {
 /// Unit direction of largest stretch around `v`, in material coordinates: the top eigenvector of
 /// sum_f A_f C_f, where C_f = F^T F is the right Cauchy-Green tensor of the corner triangle of
 /// face f at v (its edges leaving v), written in rest space, and A_f that triangle's rest area.
-Eigen::Vector3d largest_stretch_direction(ClothComplex& lcc, Vertex_handle v) {
+Eigen::Vector3d largest_stretch_direction(const ClothComplex& lcc, Vertex_const_handle v) {
   Eigen::Matrix3d weighted_c = Eigen::Matrix3d::Zero();
-  for (Dart_handle d : darts_leaving(lcc, v)) {
-    const Vertex_handle a = lcc.vertex_attribute(lcc.next(d));
-    const Vertex_handle b = lcc.vertex_attribute(lcc.previous(d));
+  for (Dart_const_handle d : darts_leaving(lcc, v)) {
+    const Vertex_const_handle a = lcc.vertex_attribute(lcc.next(d));
+    const Vertex_const_handle b = lcc.vertex_attribute(lcc.previous(d));
     const Eigen::Vector3d rest_a = rest_of(a) - rest_of(v), rest_b = rest_of(b) - rest_of(v);
     const Eigen::Vector3d normal = rest_a.cross(rest_b);
     if (!(normal.norm() > 0.0)) continue;
@@ -89,20 +86,20 @@ Eigen::Vector3d largest_stretch_direction(ClothComplex& lcc, Vertex_handle v) {
 /// Whether tearing the dart's edge would cut off a piece of fewer than `min_faces` faces: a
 /// search from each side over faces joined by sewn edges (the torn one excluded) that stops at
 /// `min_faces` faces or on reaching the other side.
-bool sheds_a_fragment(ClothComplex& lcc, Dart_handle d, int min_faces) {
-  const Dart_handle other = lcc.opposite<2>(d);
-  for (Dart_handle start : {d, other}) {
-    const Face_handle goal = lcc.attribute<2>(start == d ? other : d);
-    std::set<Face_handle> seen{lcc.attribute<2>(start)};
-    std::vector<Dart_handle> frontier{start};
+bool sheds_a_fragment(const ClothComplex& lcc, Dart_const_handle d, int min_faces) {
+  const Dart_const_handle other = lcc.opposite<2>(d);
+  for (Dart_const_handle start : {d, other}) {
+    const Face_const_handle goal = lcc.attribute<2>(start == d ? other : d);
+    std::set<Face_const_handle> seen{lcc.attribute<2>(start)};
+    std::vector<Dart_const_handle> frontier{start};
     bool joined = false;
     while (!frontier.empty() && !joined && static_cast<int>(seen.size()) < min_faces) {
-      const Dart_handle face = frontier.back();
+      const Dart_const_handle face = frontier.back();
       frontier.pop_back();
       for (auto e = lcc.darts_of_orbit<1>(face).begin(); e != lcc.darts_of_orbit<1>(face).end();
            ++e) {
         if (lcc.is_free<2>(e) || e == d || e == other) continue;
-        const Dart_handle across = lcc.opposite<2>(e);
+        const Dart_const_handle across = lcc.opposite<2>(e);
         if (lcc.attribute<2>(across) == goal) joined = true;
         if (seen.insert(lcc.attribute<2>(across)).second) frontier.push_back(across);
       }
@@ -114,17 +111,21 @@ bool sheds_a_fragment(ClothComplex& lcc, Dart_handle d, int min_faces) {
 
 /// The edges a fracture at `v` tears: the interior edge most perpendicular (in rest space) to the
 /// largest stretch, and for a closed fan also the best one on the other side of the stretch line;
-/// never one that would cut off a piece of fewer than `min_piece_faces` faces.
-std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min_piece_faces) {
+/// never one that would cut off a piece of fewer than `min_piece_faces` faces. The darts have the
+/// complex's constness (complex_navigation.hpp): tear() tears them.
+template <MaybeConstClothComplex Complex>
+std::vector<Dart_handle_of<Complex>> crack_edges(Complex& lcc, Vertex_handle_of<Complex> v,
+                                                 int min_piece_faces) {
+  using Dart = Dart_handle_of<Complex>;
   const Eigen::Vector3d stretch = largest_stretch_direction(lcc, v);
   struct Candidate {
-    Dart_handle dart;
+    Dart dart;
     Eigen::Vector3d direction;  ///< rest space, unit
     double alignment;           ///< |cos| of the angle to the stretch
   };
   std::vector<Candidate> candidates;
-  for (Dart_handle d : darts_leaving(lcc, v)) {
-    if (lcc.is_free<2>(d) || sheds_a_fragment(lcc, d, min_piece_faces)) continue;
+  for (Dart d : darts_leaving(lcc, v)) {
+    if (lcc.template is_free<2>(d) || sheds_a_fragment(lcc, d, min_piece_faces)) continue;
     const Eigen::Vector3d u =
         (rest_of(lcc.vertex_attribute(lcc.next(d))) - rest_of(v)).normalized();
     candidates.push_back({d, u, std::abs(u.dot(stretch))});
@@ -138,7 +139,7 @@ std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min
   };
   const Candidate* first = best_where([](const Candidate&) { return true; });
   if (first == nullptr) return {};
-  std::vector<Dart_handle> edges{first->dart};
+  std::vector<Dart> edges{first->dart};
   if (fan_is_closed(lcc, v)) {
     // the side of the stretch line the first edge leaves on
     const Eigen::Vector3d across = first->direction - first->direction.dot(stretch) * stretch;
@@ -149,49 +150,61 @@ std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min
   return edges;
 }
 
-/// An edge over its tearing strain, by its two ends.
+/// An edge over its tearing strain, by its two ends, in handles of the complex's constness
+/// (complex_navigation.hpp): tear() breaks the cloth at one of them.
+template <MaybeConstClothComplex Complex>
 struct Overstretched {
   double ratio;  ///< strain over tearing strain, > 1
-  Vertex_handle a, b;
+  Vertex_handle_of<Complex> a, b;
 };
 
 /// The edges over their tearing strain, most overstretched first (container order on ties).
-std::vector<Overstretched> overstretched_edges(ClothComplex& lcc, const TearingOptions& options) {
-  std::vector<Overstretched> edges;
-  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
-    const Vertex_handle a = lcc.vertex_attribute(d);
-    const Vertex_handle b = lcc.vertex_attribute(lcc.next(d));
+template <MaybeConstClothComplex Complex>
+std::vector<Overstretched<Complex>> overstretched_edges(Complex& lcc,
+                                                        const TearingOptions& options) {
+  std::vector<Overstretched<Complex>> edges;
+  for (auto d = lcc.template one_dart_per_cell<1>().begin();
+       d != lcc.template one_dart_per_cell<1>().end(); ++d) {
+    const Vertex_handle_of<Complex> a = lcc.vertex_attribute(d);
+    const Vertex_handle_of<Complex> b = lcc.vertex_attribute(lcc.next(d));
     const double ratio =
         edge_engineering_strain(lcc, d) / tearing_strain_of(options, rest_of(a), rest_of(b));
     if (ratio > 1.0) edges.push_back({ratio, a, b});
   }
-  std::stable_sort(edges.begin(), edges.end(), [](const Overstretched& x, const Overstretched& y) {
-    return x.ratio > y.ratio;
-  });
+  std::stable_sort(edges.begin(), edges.end(),
+                   [](const Overstretched<Complex>& x, const Overstretched<Complex>& y) {
+                     return x.ratio > y.ratio;
+                   });
   return edges;
 }
 
 /// The end of an overstretched edge where the cloth breaks: one whose fan is open (on the border
 /// or a crack tip, where one torn edge splits it), then one already on a crack, then `a`.
-Vertex_handle breaking_end(ClothComplex& lcc, const Overstretched& edge) {
+template <MaybeConstClothComplex Complex>
+Vertex_handle_of<Complex> breaking_end(const ClothComplex& lcc,
+                                       const Overstretched<Complex>& edge) {
   const bool a_open = !fan_is_closed(lcc, edge.a);
   const bool b_open = !fan_is_closed(lcc, edge.b);
   if (a_open != b_open) return a_open ? edge.a : edge.b;
   return !edge.a->info().on_crack && edge.b->info().on_crack ? edge.b : edge.a;
 }
 
-/// The edges of the knife's walk along the polyline (see cut_along).
-std::vector<Dart_handle> cut_path(ClothComplex& lcc, const std::vector<Eigen::Vector3d>& polyline) {
-  std::vector<Dart_handle> path;
-  Vertex_handle here = nearest_vertex(lcc, polyline.front());
+/// The edges of the knife's walk along the polyline (see cut_along), of the complex's constness
+/// (complex_navigation.hpp): cut_along() tears them.
+template <MaybeConstClothComplex Complex>
+std::vector<Dart_handle_of<Complex>> cut_path(Complex& lcc,
+                                              const std::vector<Eigen::Vector3d>& polyline) {
+  using Dart = Dart_handle_of<Complex>;
+  std::vector<Dart> path;
+  Vertex_handle_of<Complex> here = nearest_vertex(lcc, polyline.front());
   double along_m = project_on_polyline(polyline, rest_of(here)).arc_length_m;
-  std::set<Vertex_handle> visited{here};
+  std::set<Vertex_const_handle> visited{here};
   for (;;) {
-    Dart_handle step = nullptr;
+    Dart step = nullptr;
     PolylineProjection best{std::numeric_limits<double>::infinity(), 0.0};
-    for (Dart_handle d : darts_leaving(lcc, here)) {
-      if (lcc.is_free<2>(d)) continue;
-      const Vertex_handle next = lcc.vertex_attribute(lcc.next(d));
+    for (Dart d : darts_leaving(lcc, here)) {
+      if (lcc.template is_free<2>(d)) continue;
+      const Vertex_const_handle next = lcc.vertex_attribute(lcc.next(d));
       const PolylineProjection p = project_on_polyline(polyline, rest_of(next));
       const double edge_m = (rest_of(next) - rest_of(here)).norm();
       // forward, near the polyline (within one edge), closest first, then furthest along
@@ -239,7 +252,7 @@ TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_partic
   if (!(options.strain_threshold > 0.0)) return report;
   std::set<Vertex_handle> touched;  // ends of edges torn in this pass
   std::vector<Vertex_handle> tips;
-  for (const Overstretched& overstretched : overstretched_edges(lcc, options)) {
+  for (const Overstretched<ClothComplex>& overstretched : overstretched_edges(lcc, options)) {
     if (report.tears >= options.max_tears_per_step) break;
     if (touched.count(overstretched.a) || touched.count(overstretched.b)) continue;
     const Vertex_handle v = breaking_end(lcc, overstretched);

@@ -4,7 +4,8 @@
 #include <map>
 #include <sstream>
 
-#include "topology/cloth_properties.hpp"
+#include "topology/mass_lumping.hpp"
+#include "topology/rest_geometry.hpp"
 
 namespace tissu {
 namespace {

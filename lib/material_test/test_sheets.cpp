@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "topology/build_cloth_complex.hpp"
-#include "topology/cloth_properties.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/grid_mesh.hpp"
 #include "topology/refine.hpp"
 

@@ -1,18 +1,17 @@
 // A cloth dropped on a ball settles over it without entering it or passing through itself, checked
 // with CGAL's exact triangle-triangle intersection test.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <gtest/gtest.h>
 
 #include "lib/scenario/scenario.hpp"
 #include "lib/simulation.hpp"
 #include "tests/test_temp_dir.hpp"
+#include "topology/eigen_conversions.hpp"
 
 namespace tissu {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t,
                                                         CGAL::Box_intersection_d::ID_EXPLICIT>;
 
@@ -36,10 +35,7 @@ int intersecting_face_pairs(const IndexedMesh& mesh) {
   std::vector<Kernel::Triangle_3> triangles;
   std::vector<Box> boxes;
   for (const std::vector<int>& f : mesh.faces) {
-    auto point = [&](int v) {
-      const Eigen::Vector3d& x = mesh.vertices[v];
-      return Kernel::Point_3(x.x(), x.y(), x.z());
-    };
+    auto point = [&](int v) { return to_point(mesh.vertices[v]); };
     triangles.emplace_back(point(f[0]), point(f[1]), point(f[2]));
     boxes.emplace_back(triangles.back().bbox(), triangles.size() - 1);
   }

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "cloth_test_support.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/compile.hpp"
+#include "topology/mass_lumping.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {

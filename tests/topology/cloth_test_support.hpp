@@ -6,8 +6,9 @@
 #include <string>
 
 #include "topology/build_cloth_complex.hpp"
-#include "topology/cloth_properties.hpp"
+#include "topology/eigen_conversions.hpp"
 #include "topology/grid_mesh.hpp"
+#include "topology/mass_lumping.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu::test {
@@ -25,8 +26,7 @@ inline void expect_valid_with_mass(const ClothComplex& lcc, double expected_kg,
 inline Eigen::Vector3d complex_momentum(const ClothComplex& lcc) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Vector3& u = v->info().velocity;
-    p += v->info().mass * Eigen::Vector3d(u.x(), u.y(), u.z());
+    p += v->info().mass * to_eigen(v->info().velocity);
   }
   return p;
 }

@@ -7,7 +7,7 @@
 
 #include "cloth_test_support.hpp"
 #include "topology/apply_pins.hpp"
-#include "topology/cloth_properties.hpp"
+#include "topology/mass_lumping.hpp"
 #include "topology/refine.hpp"
 #include "topology/validity.hpp"
 

@@ -11,8 +11,10 @@
 #include "cloth_test_support.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
+#include "topology/complex_navigation.hpp"
 #include "topology/membrane_stiffness.hpp"
 #include "topology/refine.hpp"
+#include "topology/spring_assignment.hpp"
 #include "topology/tear.hpp"
 
 namespace tissu {

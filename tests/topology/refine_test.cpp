@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "cloth_test_support.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/validity.hpp"
 

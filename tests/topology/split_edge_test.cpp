@@ -7,7 +7,6 @@
 #include "cloth_test_support.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "topology/apply_pins.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/compile.hpp"
 #include "topology/validity.hpp"
 
@@ -122,10 +121,8 @@ TEST_F(SplitEdgeTest, MomentumAndCentreOfMassAreUnchanged) {
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero(), first_moment = Eigen::Vector3d::Zero();
     for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
       const double m = v->info().mass;
-      const Vector3& vel = v->info().velocity;
-      const Point3& x = v->point();
-      momentum += m * Eigen::Vector3d(vel.x(), vel.y(), vel.z());
-      first_moment += m * Eigen::Vector3d(x.x(), x.y(), x.z());
+      momentum += m * to_eigen(v->info().velocity);
+      first_moment += m * to_eigen(v->point());
     }
     return std::pair{momentum, first_moment};
   };

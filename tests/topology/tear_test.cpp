@@ -8,7 +8,6 @@
 
 #include "cloth_test_support.hpp"
 #include "solver/pd/particle_coloring.hpp"
-#include "topology/cloth_properties.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
 #include "topology/refine.hpp"
@@ -272,9 +271,8 @@ TEST_P(CrackTipTest, TheCrackRunsAcrossTheStretchNotAlongTheGridLines) {
   build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
   const Eigen::Vector3d along = Eigen::Vector3d(1, 0, 1).normalized();
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Eigen::Vector3d x(v->point().x(), v->point().y(), v->point().z());
-    const Eigen::Vector3d stretched = x + 0.4 * x.dot(along) * along;
-    v->point() = Point3(stretched.x(), stretched.y(), stretched.z());
+    const Eigen::Vector3d x = to_eigen(v->point());
+    v->point() = to_point(x + 0.4 * x.dot(along) * along);
   }
   TearingOptions tearing;
   tearing.strain_threshold = 0.2;  // grid lines stretch by 21.7 %, the diagonals not at all
