@@ -2,14 +2,14 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
 #include <optional>
 #include <vector>
 
 #include "topology/complex_navigation.hpp"
+#include "topology/edge_measures.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/local_update.hpp"
-#include "topology/refine.hpp"
+#include "topology/rest_geometry.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -61,8 +61,8 @@ std::optional<Bisection<Complex>> bisection_at(Complex& lcc, Vertex_handle_of<Co
     for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
       if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
       Bisection<Complex> b{m, {}, {}, {}, 0.0};
-      b.parent_edge_m = std::sqrt(CGAL::squared_distance(
-          neighbours[i].first->info().rest_position, neighbours[j].first->info().rest_position));
+      b.parent_edge_m = rest_distance_m(neighbours[i].first->info().rest_position,
+                                        neighbours[j].first->info().rest_position);
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         b.patch.push_back(neighbours[k].first);
         if (k == i || k == j) continue;

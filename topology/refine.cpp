@@ -1,23 +1,15 @@
 #include "topology/refine.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <set>
 
 #include "topology/complex_navigation.hpp"
-#include "topology/face_strain.hpp"
+#include "topology/edge_measures.hpp"
 #include "topology/rest_geometry.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {
 namespace {
-
-Vector3 face_normal(const ClothComplex& lcc, Dart_const_handle d) {
-  const Point3& a = lcc.point(d);
-  const Point3& b = lcc.point(lcc.next(d));
-  const Point3& c = lcc.point(lcc.next(lcc.next(d)));
-  return CGAL::cross_product(b - a, c - a);
-}
 
 /// The dart of the longest rest-space edge of the face of `d` (the first in the face's order from
 /// `d` among equally long ones), of the complex's constness (complex_navigation.hpp): the edge to
@@ -97,19 +89,6 @@ bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const Refineme
 }
 
 }  // namespace
-
-double edge_strain(const ClothComplex& lcc, Dart_const_handle d) {
-  return std::abs(edge_engineering_strain(lcc, d));
-}
-
-double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle d) {
-  if (lcc.is_free<2>(d)) return 0.0;
-  const Vector3 n1 = face_normal(lcc, d);
-  const Vector3 n2 = face_normal(lcc, lcc.opposite<2>(d));
-  const double norms = std::sqrt(n1.squared_length() * n2.squared_length());
-  if (!(norms > 0.0)) return 0.0;
-  return std::acos(std::clamp(n1 * n2 / norms, -1.0, 1.0));
-}
 
 int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
                          int max_particles, const SpringSettings& settings) {

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "topology/complex_navigation.hpp"
+#include "topology/edge_measures.hpp"
 #include "topology/eigen_conversions.hpp"
-#include "topology/face_strain.hpp"
 #include "topology/local_update.hpp"
 #include "topology/polyline.hpp"
 #include "topology/refine.hpp"
