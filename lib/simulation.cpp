@@ -14,7 +14,7 @@
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
 #include "topology/current_mesh.hpp"
-#include "topology/face_strain.hpp"
+#include "topology/edge_measures.hpp"
 #include "topology/refine.hpp"
 #include "topology/tear.hpp"
 

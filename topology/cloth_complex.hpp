@@ -5,16 +5,13 @@
 /// shear diagonal, Delingette's couplings), faces the rest area and material (docs/complex.md).
 /// Heavy header: include it only from topology/ and lib/ sources.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 
 #include <cstdint>
 
-namespace tissu {
+#include "topology/kernel.hpp"
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point3 = Kernel::Point_3;
-using Vector3 = Kernel::Vector_3;
+namespace tissu {
 
 /// Whether a spring slot has been filled, and with what. Edges and darts that CGAL creates start
 /// unassigned; the code that creates them must assign them.

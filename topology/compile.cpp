@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "topology/eigen_conversions.hpp"
+
 namespace tissu {
 namespace {
 
@@ -110,9 +112,8 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
     out.particle_vertices.push_back(v);
     model.mass[index] = p.mass;
     model.pinned[index] = p.pinned ? 1 : 0;
-    const Point3& x = v->point();
-    out.state.x.segment<3>(3 * index) << x.x(), x.y(), x.z();
-    out.state.v.segment<3>(3 * index) << p.velocity.x(), p.velocity.y(), p.velocity.z();
+    out.state.x.segment<3>(3 * index) = to_eigen(v->point());
+    out.state.v.segment<3>(3 * index) = to_eigen(p.velocity);
   }
 
   const std::vector<SpringRecord> records = collect_springs(lcc);
@@ -142,10 +143,8 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
 void write_back(const CompiledCloth& compiled, const State& state, ClothComplex& lcc) {
   for (std::size_t i = 0; i < compiled.particle_vertices.size(); ++i) {
     const Vertex_handle v = compiled.particle_vertices[i];
-    const auto x = state.x.segment<3>(3 * i);
-    const auto vel = state.v.segment<3>(3 * i);
-    lcc.point_of_vertex_attribute(v) = Point3(x[0], x[1], x[2]);
-    lcc.info_of_attribute<0>(v).velocity = Vector3(vel[0], vel[1], vel[2]);
+    lcc.point_of_vertex_attribute(v) = to_point(state.x.segment<3>(3 * i));
+    lcc.info_of_attribute<0>(v).velocity = to_vector(state.v.segment<3>(3 * i));
   }
 }
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "topology/cloth_complex.hpp"
+#include "topology/kernel.hpp"
 
 namespace tissu {
 
