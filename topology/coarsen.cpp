@@ -15,16 +15,15 @@
 namespace tissu {
 namespace {
 
-/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners, in
-/// handles of the complex's constness (complex_navigation.hpp): the ones undo() edits through.
-template <MaybeConstClothComplex Complex>
+/// A vertex inserted by one bisection of the edge (a, b) and joined to one or two corners, with
+/// the handles undo() edits through.
 struct Bisection {
-  Vertex_handle_of<Complex> middle;
-  std::vector<Dart_handle_of<Complex>> cut_edges;  ///< darts from the middle to each corner
+  Vertex_handle middle;
+  std::vector<Dart_handle> cut_edges;  ///< darts from the middle to each corner
   /// a dart of each parent face, not touching the middle
-  std::vector<Dart_handle_of<Complex>> corner_faces;
-  std::vector<Vertex_handle_of<Complex>> patch;  ///< the parent faces' vertices, middle excluded
-  double parent_edge_m = 0.0;  ///< rest length of the edge (a, b) undoing restores
+  std::vector<Dart_handle> corner_faces;
+  std::vector<Vertex_handle> patch;  ///< the parent faces' vertices, middle excluded
+  double parent_edge_m = 0.0;        ///< rest length of the edge (a, b) undoing restores
 };
 
 /// Whether (a, b) is the edge whose split made `m`: m is its midpoint and a or b is the end
@@ -40,17 +39,15 @@ bool is_split_edge_of(Vertex_const_handle m, Vertex_const_handle a, Vertex_const
 }
 
 /// The bisection that created `m`, if its neighbourhood is still exactly that.
-template <MaybeConstClothComplex Complex>
-std::optional<Bisection<Complex>> bisection_at(Complex& lcc, Vertex_handle_of<Complex> m) {
-  using Dart = Dart_handle_of<Complex>;
-  const std::vector<Dart> out = darts_leaving(lcc, m);
+std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
+  const std::vector<Dart_handle> out = darts_leaving(lcc, m);
   // neighbours: the far end of each outgoing dart, plus, on the boundary, the origin of the dart
   // that ends at m without a twin
-  std::vector<std::pair<Vertex_handle_of<Complex>, Dart>> neighbours;  // with the dart m -> it
-  for (Dart d : out) {
+  std::vector<std::pair<Vertex_handle, Dart_handle>> neighbours;  // with the dart m -> it
+  for (Dart_handle d : out) {
     neighbours.emplace_back(lcc.vertex_attribute(lcc.next(d)), d);
-    const Dart incoming = lcc.previous(d);
-    if (lcc.template is_free<2>(incoming)) {
+    const Dart_handle incoming = lcc.previous(d);
+    if (lcc.is_free<2>(incoming)) {
       neighbours.emplace_back(lcc.vertex_attribute(incoming), nullptr);
     }
   }
@@ -60,14 +57,14 @@ std::optional<Bisection<Complex>> bisection_at(Complex& lcc, Vertex_handle_of<Co
   for (std::size_t i = 0; i < neighbours.size(); ++i) {
     for (std::size_t j = i + 1; j < neighbours.size(); ++j) {
       if (!is_split_edge_of(m, neighbours[i].first, neighbours[j].first)) continue;
-      Bisection<Complex> b{m, {}, {}, {}, 0.0};
+      Bisection b{m, {}, {}, {}, 0.0};
       b.parent_edge_m = rest_distance_m(neighbours[i].first->info().rest_position,
                                         neighbours[j].first->info().rest_position);
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         b.patch.push_back(neighbours[k].first);
         if (k == i || k == j) continue;
-        const Dart to_corner = neighbours[k].second;
-        if (to_corner == nullptr || lcc.template is_free<2>(to_corner)) return std::nullopt;
+        const Dart_handle to_corner = neighbours[k].second;
+        if (to_corner == nullptr || lcc.is_free<2>(to_corner)) return std::nullopt;
         b.cut_edges.push_back(to_corner);
         // in the face of m -> corner, the dart after it leaves the corner away from m
         b.corner_faces.push_back(lcc.next(to_corner));
@@ -105,7 +102,7 @@ Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   return p;
 }
 
-void undo(ClothComplex& lcc, const Bisection<ClothComplex>& b, const SpringSettings& settings) {
+void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
   std::vector<Vertex_handle> with_middle = b.patch;
   with_middle.push_back(b.middle);
   const Eigen::Vector3d momentum_before = free_momentum(with_middle);
@@ -151,7 +148,7 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
     return a->info().level > b->info().level;
   });
   for (Vertex_handle v : created) {
-    const std::optional<Bisection<ClothComplex>> b = bisection_at(lcc, v);
+    const std::optional<Bisection> b = bisection_at(lcc, v);
     if (!b || !calm_around(lcc, b->middle, options, hysteresis)) continue;
     if (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m) continue;
     undo(lcc, *b, settings);

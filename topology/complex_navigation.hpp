@@ -12,9 +12,9 @@
 /// const_cast back from CGAL's const handles (CGAL 5.5 converts only a mutable Dart& or a
 /// container index, O(#blocks), to a Dart_handle). The bodies are in complex_navigation.cpp,
 /// instantiated there for both constnesses, so the compiler checks that they only read. An editor
-/// holding const handles reads through std::as_const(lcc). The helpers of refine, coarsen and tear
-/// that answer handles to edit follow the same pattern (Dart_handle_of, Vertex_handle_of); a
-/// query no editor needs a mutable answer from takes and answers const handles.
+/// holding const handles reads through std::as_const(lcc). The internal helpers of refine, coarsen
+/// and tear that only ever answer handles to edit take the mutable complex; a query no editor needs
+/// a mutable answer from takes and answers const handles.
 
 #include <Eigen/Core>
 #include <concepts>

@@ -12,13 +12,10 @@ namespace tissu {
 namespace {
 
 /// The dart of the longest rest-space edge of the face of `d` (the first in the face's order from
-/// `d` among equally long ones), of the complex's constness (complex_navigation.hpp): the edge to
-/// bisect.
-template <MaybeConstClothComplex Complex>
-Dart_handle_of<Complex> longest_edge(Complex& lcc, Dart_handle_of<Complex> d) {
-  Dart_handle_of<Complex> best = d;
-  for (auto e = lcc.template darts_of_orbit<1>(d).begin();
-       e != lcc.template darts_of_orbit<1>(d).end(); ++e) {
+/// `d` among equally long ones): the edge to bisect.
+Dart_handle longest_edge(ClothComplex& lcc, Dart_handle d) {
+  Dart_handle best = d;
+  for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
     if (edge_rest_length_m(lcc, e) > edge_rest_length_m(lcc, best)) best = e;
   }
   return best;

@@ -111,21 +111,17 @@ bool sheds_a_fragment(const ClothComplex& lcc, Dart_const_handle d, int min_face
 
 /// The edges a fracture at `v` tears: the interior edge most perpendicular (in rest space) to the
 /// largest stretch, and for a closed fan also the best one on the other side of the stretch line;
-/// never one that would cut off a piece of fewer than `min_piece_faces` faces. The darts have the
-/// complex's constness (complex_navigation.hpp): tear() tears them.
-template <MaybeConstClothComplex Complex>
-std::vector<Dart_handle_of<Complex>> crack_edges(Complex& lcc, Vertex_handle_of<Complex> v,
-                                                 int min_piece_faces) {
-  using Dart = Dart_handle_of<Complex>;
+/// never one that would cut off a piece of fewer than `min_piece_faces` faces.
+std::vector<Dart_handle> crack_edges(ClothComplex& lcc, Vertex_handle v, int min_piece_faces) {
   const Eigen::Vector3d stretch = largest_stretch_direction(lcc, v);
   struct Candidate {
-    Dart dart;
+    Dart_handle dart;
     Eigen::Vector3d direction;  ///< rest space, unit
     double alignment;           ///< |cos| of the angle to the stretch
   };
   std::vector<Candidate> candidates;
-  for (Dart d : darts_leaving(lcc, v)) {
-    if (lcc.template is_free<2>(d) || sheds_a_fragment(lcc, d, min_piece_faces)) continue;
+  for (Dart_handle d : darts_leaving(lcc, v)) {
+    if (lcc.is_free<2>(d) || sheds_a_fragment(lcc, d, min_piece_faces)) continue;
     const Eigen::Vector3d u =
         (rest_of(lcc.vertex_attribute(lcc.next(d))) - rest_of(v)).normalized();
     candidates.push_back({d, u, std::abs(u.dot(stretch))});
@@ -139,7 +135,7 @@ std::vector<Dart_handle_of<Complex>> crack_edges(Complex& lcc, Vertex_handle_of<
   };
   const Candidate* first = best_where([](const Candidate&) { return true; });
   if (first == nullptr) return {};
-  std::vector<Dart> edges{first->dart};
+  std::vector<Dart_handle> edges{first->dart};
   if (fan_is_closed(lcc, v)) {
     // the side of the stretch line the first edge leaves on
     const Eigen::Vector3d across = first->direction - first->direction.dot(stretch) * stretch;
@@ -150,60 +146,48 @@ std::vector<Dart_handle_of<Complex>> crack_edges(Complex& lcc, Vertex_handle_of<
   return edges;
 }
 
-/// An edge over its tearing strain, by its two ends, in handles of the complex's constness
-/// (complex_navigation.hpp): tear() breaks the cloth at one of them.
-template <MaybeConstClothComplex Complex>
+/// An edge over its tearing strain, by its two ends: tear() breaks the cloth at one of them.
 struct Overstretched {
   double ratio;  ///< strain over tearing strain, > 1
-  Vertex_handle_of<Complex> a, b;
+  Vertex_handle a, b;
 };
 
 /// The edges over their tearing strain, most overstretched first (container order on ties).
-template <MaybeConstClothComplex Complex>
-std::vector<Overstretched<Complex>> overstretched_edges(Complex& lcc,
-                                                        const TearingOptions& options) {
-  std::vector<Overstretched<Complex>> edges;
-  for (auto d = lcc.template one_dart_per_cell<1>().begin();
-       d != lcc.template one_dart_per_cell<1>().end(); ++d) {
-    const Vertex_handle_of<Complex> a = lcc.vertex_attribute(d);
-    const Vertex_handle_of<Complex> b = lcc.vertex_attribute(lcc.next(d));
+std::vector<Overstretched> overstretched_edges(ClothComplex& lcc, const TearingOptions& options) {
+  std::vector<Overstretched> edges;
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    const Vertex_handle a = lcc.vertex_attribute(d);
+    const Vertex_handle b = lcc.vertex_attribute(lcc.next(d));
     const double ratio =
         edge_engineering_strain(lcc, d) / tearing_strain_of(options, rest_of(a), rest_of(b));
     if (ratio > 1.0) edges.push_back({ratio, a, b});
   }
-  std::stable_sort(edges.begin(), edges.end(),
-                   [](const Overstretched<Complex>& x, const Overstretched<Complex>& y) {
-                     return x.ratio > y.ratio;
-                   });
+  std::stable_sort(edges.begin(), edges.end(), [](const Overstretched& x, const Overstretched& y) {
+    return x.ratio > y.ratio;
+  });
   return edges;
 }
 
 /// The end of an overstretched edge where the cloth breaks: one whose fan is open (on the border
 /// or a crack tip, where one torn edge splits it), then one already on a crack, then `a`.
-template <MaybeConstClothComplex Complex>
-Vertex_handle_of<Complex> breaking_end(const ClothComplex& lcc,
-                                       const Overstretched<Complex>& edge) {
+Vertex_handle breaking_end(const ClothComplex& lcc, const Overstretched& edge) {
   const bool a_open = !fan_is_closed(lcc, edge.a);
   const bool b_open = !fan_is_closed(lcc, edge.b);
   if (a_open != b_open) return a_open ? edge.a : edge.b;
   return !edge.a->info().on_crack && edge.b->info().on_crack ? edge.b : edge.a;
 }
 
-/// The edges of the knife's walk along the polyline (see cut_along), of the complex's constness
-/// (complex_navigation.hpp): cut_along() tears them.
-template <MaybeConstClothComplex Complex>
-std::vector<Dart_handle_of<Complex>> cut_path(Complex& lcc,
-                                              const std::vector<Eigen::Vector3d>& polyline) {
-  using Dart = Dart_handle_of<Complex>;
-  std::vector<Dart> path;
-  Vertex_handle_of<Complex> here = nearest_vertex(lcc, polyline.front());
+/// The edges of the knife's walk along the polyline (see cut_along).
+std::vector<Dart_handle> cut_path(ClothComplex& lcc, const std::vector<Eigen::Vector3d>& polyline) {
+  std::vector<Dart_handle> path;
+  Vertex_handle here = nearest_vertex(lcc, polyline.front());
   double along_m = project_on_polyline(polyline, rest_of(here)).arc_length_m;
   std::set<Vertex_const_handle> visited{here};
   for (;;) {
-    Dart step = nullptr;
+    Dart_handle step = nullptr;
     PolylineProjection best{std::numeric_limits<double>::infinity(), 0.0};
-    for (Dart d : darts_leaving(lcc, here)) {
-      if (lcc.template is_free<2>(d)) continue;
+    for (Dart_handle d : darts_leaving(lcc, here)) {
+      if (lcc.is_free<2>(d)) continue;
       const Vertex_const_handle next = lcc.vertex_attribute(lcc.next(d));
       const PolylineProjection p = project_on_polyline(polyline, rest_of(next));
       const double edge_m = (rest_of(next) - rest_of(here)).norm();
@@ -252,7 +236,7 @@ TearReport tear(ClothComplex& lcc, const TearingOptions& options, int max_partic
   if (!(options.strain_threshold > 0.0)) return report;
   std::set<Vertex_handle> touched;  // ends of edges torn in this pass
   std::vector<Vertex_handle> tips;
-  for (const Overstretched<ClothComplex>& overstretched : overstretched_edges(lcc, options)) {
+  for (const Overstretched& overstretched : overstretched_edges(lcc, options)) {
     if (report.tears >= options.max_tears_per_step) break;
     if (touched.count(overstretched.a) || touched.count(overstretched.b)) continue;
     const Vertex_handle v = breaking_end(lcc, overstretched);
