@@ -15,7 +15,7 @@ namespace tissu {
 namespace {
 
 StoredSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
-                       double rest_length_m) {
+                         double rest_length_m) {
   if (!kind.enabled || !(rest_length_m > 0.0)) return StoredSpring{SpringSlot::absent, 0, 0, 0};
   return StoredSpring{SpringSlot::present, stiffness_n_per_m, kind.damping, rest_length_m};
 }
