@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <string>
 
 #include "lib/progress.hpp"
 #include "lib/scenario/scenario_error.hpp"
@@ -35,7 +36,13 @@ int execute(const RunCommand& command) {
       options.on_frame = [&progress](const FrameStats& row) { progress(row); };
       options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
     }
+    std::string unconverged_warning;  // printed after the run, so as not to break the progress bar
+    options.on_warning = [&unconverged_warning](const std::string& w) { unconverged_warning = w; };
     const RunResult result = run_scenario(scenario, options);
+    if (!unconverged_warning.empty()) {
+      std::fprintf(stderr, "tissu: warning: %s; %d such steps in all\n",
+                   unconverged_warning.c_str(), result.unconverged_steps);
+    }
     if (!result.video_warning.empty()) {
       std::fprintf(stderr, "tissu: warning: %s\n", result.video_warning.c_str());
     }

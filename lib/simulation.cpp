@@ -157,6 +157,31 @@ std::string divergence_message(const Scenario& scenario, int frame, const Diverg
          last_good.string();
 }
 
+/// What to do about steps that missed their tolerance, for the warning of the first such frame.
+std::string unconverged_message(const Scenario& scenario, int frame, int unconverged) {
+  const SolverParams& solver = scenario.solver;
+  std::string what = to_string(solver.integrator);
+  std::string advice;
+  switch (solver.integrator) {
+    case Integrator::projective_dynamics:
+      what += std::string(" with the ") + to_string(solver.pd.global_solver) + " global solver";
+      advice = solver.pd.global_solver == PdGlobalSolver::direct
+                   ? "raise simulation.pd.iterations or substeps"
+                   : "its sweeps leave the cloth behind the step (frozen, on stiff cloth): use "
+                     "the \"direct\" global solver, more linear_iterations, or more substeps";
+      break;
+    case Integrator::implicit_euler:
+      advice = "raise simulation.cg_max_iterations or substeps";
+      break;
+    default:
+      advice = "raise its max_iterations, or substeps";
+      break;
+  }
+  return "frame " + std::to_string(frame) + ": " + std::to_string(unconverged) + " of " +
+         std::to_string(scenario.substeps) + " steps of " + what + " did not converge; " + advice +
+         " (docs/scenario.md); stats.csv counts them in unconverged_steps";
+}
+
 }  // namespace
 
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
@@ -211,6 +236,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       render_recorded(result);
       return result;
     }
+    if (steps.unconverged > 0 && result.unconverged_steps == 0 && options.on_warning) {
+      options.on_warning(unconverged_message(scenario, frame, steps.unconverged));
+    }
+    result.unconverged_steps += steps.unconverged;
     const Adaptation changes = adapt_frame(scenario, frame, lcc, cloth);
     record(frame, steps, changes);
     result.frames_done = frame;

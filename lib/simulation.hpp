@@ -19,6 +19,8 @@ struct RunOptions {
   std::optional<int> frames;                 ///< overrides the scenario's frame count
   std::function<void(const FrameStats&)> on_frame;  ///< called after each frame, e.g. progress
   std::function<void(int, int)> on_image;  ///< called with (done, total) after each rendered image
+  /// called once, at the first frame with an unconverged step, with a one-line explanation
+  std::function<void(const std::string&)> on_warning;
   /// when set, called with the frame number and the cloth's surface after each frame, frame 0 too
   std::function<void(int, const MaterialSurface&)> on_surface;
 };
@@ -27,6 +29,7 @@ struct RunResult {
   int frames_done = 0;  ///< frames completed after frame 0
   bool ok = true;
   std::string failure;        ///< when !ok: the frame, the cause and where the last good state is
+  int unconverged_steps = 0;  ///< steps that missed their solver's tolerance, in all frames
   int images = 0;             ///< PNG frames rendered
   std::string video_warning;  ///< set when a video was asked for and not made
 };

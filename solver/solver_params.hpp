@@ -16,6 +16,10 @@ enum class Integrator {
   implicit_euler,       ///< one linearised backward-Euler step (Baraff & Witkin 1998)
   projective_dynamics,  ///< backward Euler by local/global iterations (Liu et al. 2013; course,
                         ///< Algorithms 1-3); options in ProjectiveDynamicsOptions
+  newton,               ///< backward Euler minimised to a tolerance by Newton's method, linear
+                        ///< solves by PD-preconditioned CG; options in NewtonOptions
+  quasi_newton,         ///< backward Euler minimised to a tolerance by L-BFGS, the PD matrix as
+                        ///< initial Hessian (Liu et al. 2017); options in QuasiNewtonOptions
 };
 
 /// Wind blowing on the cloth faces; gusts modulate the mean velocity.
@@ -68,6 +72,18 @@ struct ProjectiveDynamicsOptions {
   /// iterate relative to the step's displacement), dimensionless; 0 runs exactly `iterations`.
   /// A step that has not met a positive tolerance after `iterations` returns not_converged.
   double tolerance = 0.0;
+  /// Iterative global solvers: after the iterations, a step whose estimated error exceeds this is
+  /// not_converged, whatever `tolerance` says. The estimate is how far one exact solve of the last
+  /// global step would still move the iterate, max_i |p*_i - p_i|, relative to the step's
+  /// displacement max_i |p_i - x_i| (or 1 % of h^2 max_i |f_ext,i| / m_i, the sag of a step, for a
+  /// cloth at rest): the error the sweeps left, which on stiff cloth at large
+  /// steps leaves the sheet frozen in the air, above 1 when larger than the step itself. Costs
+  /// one factorisation of the global matrix per model and h, and one solve per step. The direct
+  /// solver's global steps are exact: not checked. Dimensionless, >= 0; 0 turns it off.
+  /// 1: the stiff sheet frozen by one-sweep solvers at h = 1/30 s gives 4 to 13 on average, a
+  /// soft cloth they solve well below 0.1, peaks below 0.8 (docs/benchmarks.md, "Unconverged
+  /// steps").
+  double max_estimated_error = 1.0;
   /// Chebyshev: estimate rho of the spectral radius of the (relaxed) Jacobi iteration, in [0, 1),
   /// dimensionless; 0 = Gershgorin's bound max_i sum_j s_ij / (m_i/h^2 + sum_j s_ij), relaxed as
   /// 1 - gamma (1 - bound): an upper bound, too large inside PD for stiff cloth. 0.95 keeps a
@@ -82,12 +98,34 @@ struct ProjectiveDynamicsOptions {
   int chebyshev_delay = 0;
 };
 
+/// Minimisation of backward Euler's incremental potential by the quasi-Newton integrator.
+struct QuasiNewtonOptions {
+  /// the step stops once its last quasi-Newton correction is at most tolerance times the step's
+  /// displacement (as NewtonOptions::tolerance), in (0, 1], dimensionless
+  double tolerance = 1e-2;
+  int max_iterations = 200;  ///< a step that has not met the tolerance by then is not_converged
+  int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
+};
+
+/// Minimisation of backward Euler's incremental potential by the Newton integrator.
+struct NewtonOptions {
+  /// the step stops once its last Newton correction max_i |dx_i| is at most tolerance times the
+  /// step's displacement max_i |x_i - x_n,i| (the measure of ProjectiveDynamicsOptions::
+  /// tolerance), in (0, 1], dimensionless. 1e-2: the stiff sheet and the curtain at h = 1/30 s
+  /// hang and fold as at 1e-3 (docs/benchmarks.md, "Converged steps at frame rate")
+  double tolerance = 1e-2;
+  int max_iterations = 20;      ///< a step that has not met the tolerance by then is not_converged
+  int cg_max_iterations = 200;  ///< conjugate gradient iterations per Newton iteration, at most
+};
+
 struct SolverParams {
   Integrator integrator = Integrator::implicit_euler;
   double time_step = 1e-3;  ///< h (s), one step; a frame is several steps
   Environment environment;
   ImplicitOptions implicit;
   ProjectiveDynamicsOptions pd;
+  NewtonOptions newton;
+  QuasiNewtonOptions quasi_newton;
   std::vector<Obstacle> obstacles;      ///< kept out of after every step, whatever the integrator
   SelfCollisionOptions self_collision;  ///< the cloth against itself, after every step
 };

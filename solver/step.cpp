@@ -6,8 +6,10 @@
 #include "solver/collision/obstacle_contacts.hpp"
 #include "solver/collision/self_collision.hpp"
 #include "solver/integrators/implicit_euler.hpp"
+#include "solver/integrators/newton.hpp"
 #include "solver/integrators/position_verlet.hpp"
 #include "solver/integrators/projective_dynamics.hpp"
+#include "solver/integrators/quasi_newton.hpp"
 #include "solver/integrators/symplectic_euler.hpp"
 
 namespace tissu {
@@ -38,6 +40,10 @@ const char* to_string(Integrator integrator) {
       return "implicit_euler";
     case Integrator::projective_dynamics:
       return "projective_dynamics";
+    case Integrator::newton:
+      return "newton";
+    case Integrator::quasi_newton:
+      return "quasi_newton";
   }
   return "unknown";
 }
@@ -94,6 +100,12 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       break;
     case Integrator::projective_dynamics:
       status = projective_dynamics_step(model, params, state, workspace);
+      break;
+    case Integrator::newton:
+      status = newton_step(model, params, state, workspace);
+      break;
+    case Integrator::quasi_newton:
+      status = quasi_newton_step(model, params, state, workspace);
       break;
   }
   const bool finite =

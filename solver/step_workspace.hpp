@@ -9,17 +9,21 @@
 #include "solver/collision/self_collision.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "solver/integrators/implicit_euler_workspace.hpp"
+#include "solver/integrators/newton_workspace.hpp"
 #include "solver/integrators/projective_dynamics_workspace.hpp"
+#include "solver/integrators/quasi_newton_workspace.hpp"
 
 namespace tissu {
 
 struct StepWorkspace {
-  ForceWorkspace forces;            ///< buffers of accumulate_forces()
-  Eigen::VectorXd force;            ///< 3#P total force of the last evaluation (N)
-  ImplicitEulerWorkspace implicit;  ///< buffers of implicit_euler_step()
-  ProjectiveDynamicsWorkspace pd;   ///< buffers and caches of projective_dynamics_step()
-  Eigen::VectorXd step_start_x;     ///< 3#P positions before the step, when there are obstacles (m)
-  int obstacle_contacts = 0;        ///< particle-obstacle contacts resolved by the last step
+  ForceWorkspace forces;              ///< buffers of accumulate_forces()
+  Eigen::VectorXd force;              ///< 3#P total force of the last evaluation (N)
+  ImplicitEulerWorkspace implicit;    ///< buffers of implicit_euler_step()
+  ProjectiveDynamicsWorkspace pd;     ///< buffers and caches of projective_dynamics_step()
+  NewtonWorkspace newton;             ///< buffers and caches of newton_step()
+  QuasiNewtonWorkspace quasi_newton;  ///< buffers and caches of quasi_newton_step()
+  Eigen::VectorXd step_start_x;  ///< 3#P positions before the step, when there are obstacles (m)
+  int obstacle_contacts = 0;     ///< particle-obstacle contacts resolved by the last step
   std::vector<std::uint8_t> touching_obstacle;  ///< #P, 1 where an obstacle held the particle
   SelfCollisionReport self_collision;       ///< what self-collision handling did in the last step
   SelfCollisionCache self_collision_pairs;  ///< broad-phase pairs kept between steps

@@ -71,14 +71,38 @@ ProjectiveDynamicsOptions read_pd(JsonObjectReader pd) {
   o.chebyshev_relaxation = pd.number_or("chebyshev_relaxation", o.chebyshev_relaxation,
                                         {0.0, 1.0, true, "a number in (0, 1]"});
   o.chebyshev_delay = pd.integer_or("chebyshev_delay", o.chebyshev_delay, 0, 100000);
+  o.max_estimated_error =
+      pd.number_or("max_estimated_error", o.max_estimated_error, non_negative(""));
   pd.finish();
   return o;
 }
 
+/// The "newton" object of "simulation": when a Newton step stops.
+NewtonOptions read_newton(JsonObjectReader newton) {
+  NewtonOptions o;
+  o.tolerance = newton.number_or("tolerance", o.tolerance, {0.0, 1.0, true, "a number in (0, 1]"});
+  o.max_iterations = newton.integer_or("max_iterations", o.max_iterations, 1, 100000);
+  o.cg_max_iterations = newton.integer_or("cg_max_iterations", o.cg_max_iterations, 1, 1000000);
+  newton.finish();
+  return o;
+}
+
+/// The "quasi_newton" object of "simulation": when an L-BFGS step stops, and its memory.
+QuasiNewtonOptions read_quasi_newton(JsonObjectReader quasi_newton) {
+  QuasiNewtonOptions o;
+  o.tolerance =
+      quasi_newton.number_or("tolerance", o.tolerance, {0.0, 1.0, true, "a number in (0, 1]"});
+  o.max_iterations = quasi_newton.integer_or("max_iterations", o.max_iterations, 1, 100000);
+  o.history = quasi_newton.integer_or("history", o.history, 0, 1000);
+  quasi_newton.finish();
+  return o;
+}
+
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
-  s.solver.integrator = read_named(simulation, "integrator", Integrator::implicit_euler,
-                                   {Integrator::symplectic_euler, Integrator::position_verlet,
-                                    Integrator::implicit_euler, Integrator::projective_dynamics});
+  s.solver.integrator = read_named(
+      simulation, "integrator", Integrator::implicit_euler,
+      {Integrator::symplectic_euler, Integrator::position_verlet, Integrator::implicit_euler,
+       Integrator::projective_dynamics, Integrator::newton, Integrator::quasi_newton});
   s.frames = simulation.integer("frames", 1, 10'000'000);
   s.frame_rate = simulation.number_or("frame_rate", 30.0, positive(" (frames per second)"));
   if (simulation.has("substeps") && simulation.has("time_step")) {
@@ -101,6 +125,10 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.threads = simulation.integer_or("threads", 0, 0, 1024);
   if (simulation.has("pd")) s.solver.pd = read_pd(simulation.object("pd"));
+  if (simulation.has("newton")) s.solver.newton = read_newton(simulation.object("newton"));
+  if (simulation.has("quasi_newton")) {
+    s.solver.quasi_newton = read_quasi_newton(simulation.object("quasi_newton"));
+  }
   simulation.finish();
 }
 

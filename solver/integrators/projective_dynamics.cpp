@@ -1,5 +1,7 @@
 #include "solver/integrators/projective_dynamics.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "solver/forces/external_forces.hpp"
@@ -35,12 +37,27 @@ bool has_converged(const Eigen::VectorXd& p, const Eigen::VectorXd& last, const 
 void check_options(const ProjectiveDynamicsOptions& options) {
   if (options.iterations < 1 || options.linear_iterations < 1 || !(options.tolerance >= 0.0) ||
       !(options.chebyshev_spectral_radius >= 0.0 && options.chebyshev_spectral_radius < 1.0) ||
-      !(options.chebyshev_relaxation > 0.0 && options.chebyshev_relaxation <= 1.0)) {
+      !(options.chebyshev_relaxation > 0.0 && options.chebyshev_relaxation <= 1.0) ||
+      !(options.max_estimated_error >= 0.0)) {
     throw std::invalid_argument(
         "projective_dynamics_step: expected pd.iterations >= 1, pd.linear_iterations >= 1, "
-        "pd.tolerance >= 0, pd.chebyshev_spectral_radius in [0, 1) and pd.chebyshev_relaxation "
-        "in (0, 1]");
+        "pd.tolerance >= 0, pd.chebyshev_spectral_radius in [0, 1), pd.chebyshev_relaxation "
+        "in (0, 1] and pd.max_estimated_error >= 0");
   }
+}
+
+// relative_correction() of the change that solving the last global step exactly would still
+// make to the iterate (the error the iterative global solver left in it), against the step's
+// displacement or, at rest, 1 % of what gravity moves a particle in a step: a frozen sheet moves
+// little and has much left. Needs the direct solver's factorisation (made once per model and h).
+constexpr double rest_fraction = 0.01;
+double estimated_step_error(const SpringModel& model, double h, const State& state,
+                            ProjectiveDynamicsWorkspace& pd) {
+  pd.correction = pd.positions;  // pinned entries: their prescribed positions, read by the solve
+  if (!pd.direct.solve(pd.system, pd.rhs, pd.correction)) return 0.0;
+  pd.correction -= pd.positions;
+  return relative_correction(model, h, pd.correction, pd.positions, state.x, pd.external_force,
+                             rest_fraction);
 }
 
 }  // namespace
@@ -127,6 +144,11 @@ StepStatus projective_dynamics_step(const SpringModel& model, const SolverParams
       converged = true;
       break;
     }
+  }
+  pd.estimated_error = 0.0;
+  if (!direct && options.max_estimated_error > 0.0) {  // the direct solver's global steps are exact
+    pd.estimated_error = estimated_step_error(model, h, state, pd);
+    if (!(pd.estimated_error <= options.max_estimated_error)) converged = false;
   }
 
   const double inverse_h = 1.0 / h;

@@ -25,6 +25,8 @@ struct ProjectiveDynamicsWorkspace {
   Eigen::Matrix3Xd projections;      ///< 3 x #S local step d_s = l_s (p_i - p_j)/|p_i - p_j| (m)
   Eigen::VectorXd rhs;               ///< 3#P c = M/h^2 y + J d (kg m/s^2)
   int iterations = 0;                ///< local/global iterations done by the last step
+  Eigen::VectorXd correction;        ///< 3#P exact solution of the last global step minus p (m)
+  double estimated_error = 0.0;      ///< the last step's estimated error (0 if not checked)
 };
 
 }  // namespace tissu

@@ -152,6 +152,32 @@ TEST(Scenario, ChebyshevOptionsOutOfRangeAreNamed) {
               HasSubstr("simulation.pd.chebyshev_delay: expected an integer from 0 to 100000"));
 }
 
+TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
+  const Scenario s = parse_scenario(
+      minimal, "dir/s.json",
+      {"simulation.integrator=newton",
+       R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50})",
+       R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3})",
+       "simulation.pd.max_estimated_error=0"});
+  EXPECT_EQ(s.solver.integrator, Integrator::newton);
+  EXPECT_DOUBLE_EQ(s.solver.newton.tolerance, 0.01);
+  EXPECT_EQ(s.solver.newton.max_iterations, 7);
+  EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);
+  EXPECT_DOUBLE_EQ(s.solver.quasi_newton.tolerance, 0.02);
+  EXPECT_EQ(s.solver.quasi_newton.max_iterations, 9);
+  EXPECT_EQ(s.solver.quasi_newton.history, 3);
+  EXPECT_DOUBLE_EQ(s.solver.pd.max_estimated_error, 0.0);
+  EXPECT_EQ(with("simulation.newton.tolerance", "0"),
+            "dir/s.json: simulation.newton.tolerance: expected a number in (0, 1], got 0");
+  EXPECT_THAT(with("simulation.quasi_newton.history", "-1"),
+              HasSubstr("simulation.quasi_newton.history: expected an integer from 0 to 1000"));
+  EXPECT_THAT(with("simulation.newton.max_iteration", "3"),
+              HasSubstr("simulation.newton.max_iteration: unknown key; did you mean "
+                        "'max_iterations'?"));
+  EXPECT_THAT(with("simulation.pd.max_estimated_error", "-1"),
+              HasSubstr("simulation.pd.max_estimated_error: expected a number >= 0"));
+}
+
 TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
   std::string text = minimal;
   text.replace(text.find("\"density\""), 9, "\"densty\"");
@@ -187,7 +213,8 @@ TEST(Scenario, OutOfRangeValuesNameTheRange) {
   EXPECT_THAT(
       with("simulation.integrator", "\"rk4\""),
       HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
-                "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", got \"rk4\""));
+                "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", \"newton\", "
+                "\"quasi_newton\", got \"rk4\""));
   EXPECT_THAT(with("environment.wind.gust_amplitude", "11"),
               HasSubstr("expected a number between 0 and 10"));
   EXPECT_THAT(with("simulation.time_step", "0.007"),

@@ -17,6 +17,7 @@
 #include "solver/forces/spring_force.hpp"
 #include "solver/integrators/implicit_euler.hpp"
 #include "solver/step.hpp"
+#include "tests/solver/backward_euler_reference.hpp"
 #include "tests/solver/test_models.hpp"
 
 namespace tissu {
@@ -57,50 +58,6 @@ SpringModel perturbed_sheet(State& state, unsigned seed) {
   return model;
 }
 
-// exact backward Euler by Newton's method to round-off: M (x1 - x0 - h v0) / h^2 = f(x1) + M g,
-// dense, free degrees of freedom only, exact (unclamped) spring Jacobians
-Eigen::VectorXd backward_euler_positions(const SpringModel& model, const State& state, double h,
-                                         const Eigen::Vector3d& gravity) {
-  const int n = model.particle_count();
-  Eigen::VectorXd x1 = state.x + h * state.v;
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    Eigen::VectorXd residual(3 * n);
-    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-    for (int p = 0; p < n; ++p) {
-      const double m = model.mass[p] / (h * h);
-      residual.segment<3>(3 * p) =
-          m * (x1 - state.x - h * state.v).segment<3>(3 * p) - model.mass[p] * gravity;
-      jacobian.block<3, 3>(3 * p, 3 * p) += m * Eigen::Matrix3d::Identity();
-    }
-    for (int s = 0; s < model.spring_count(); ++s) {
-      const int i = model.springs(s, 0);
-      const int j = model.springs(s, 1);
-      const Eigen::Vector3d xi = x1.segment<3>(3 * i);
-      const Eigen::Vector3d xj = x1.segment<3>(3 * j);
-      const Eigen::Vector3d f = spring_force(xi, xj, model.stiffness[s], model.rest_length[s]);
-      const Eigen::Matrix3d k =
-          spring_force_jacobian(xi, xj, model.stiffness[s], model.rest_length[s]);
-      residual.segment<3>(3 * i) -= f;
-      residual.segment<3>(3 * j) += f;
-      jacobian.block<3, 3>(3 * i, 3 * i) -= k;
-      jacobian.block<3, 3>(3 * j, 3 * j) -= k;
-      jacobian.block<3, 3>(3 * i, 3 * j) += k;
-      jacobian.block<3, 3>(3 * j, 3 * i) += k;
-    }
-    for (int p = 0; p < n; ++p) {
-      if (!model.pinned[p]) continue;
-      residual.segment<3>(3 * p).setZero();
-      jacobian.middleRows(3 * p, 3).setZero();
-      jacobian.middleCols(3 * p, 3).setZero();
-      jacobian.block<3, 3>(3 * p, 3 * p).setIdentity();
-    }
-    const Eigen::VectorXd delta = jacobian.partialPivLu().solve(-residual);
-    x1 += delta;
-    if (delta.lpNorm<Eigen::Infinity>() < 1e-15) break;
-  }
-  return x1;
-}
-
 TEST(ProjectiveDynamics, ConvergedStepIsTheExactBackwardEulerStep) {
   // at convergence PD minimises the backward-Euler objective (Liu et al. 2013): it must agree with
   // Newton's method on that objective to round-off, at a small and at a large time step
@@ -115,7 +72,7 @@ TEST(ProjectiveDynamics, ConvergedStepIsTheExactBackwardEulerStep) {
       params.pd.iterations = h < 1e-2 ? 50 : 1000;
       params.pd.linear_iterations = 10;
       const Eigen::VectorXd reference =
-          backward_euler_positions(model, state, h, params.environment.gravity);
+          test::backward_euler_positions(model, state, h, params.environment.gravity);
       const double displacement = (reference - state.x).lpNorm<Eigen::Infinity>();
       StepWorkspace workspace;
       State pd = state;
@@ -259,6 +216,7 @@ TEST(ProjectiveDynamics, IdenticalForOneAndTwoThreads) {
     finalize_model(model);
     SolverParams params = gravity_only(1.0 / 120.0);
     params.pd.global_solver = solver;
+    params.pd.max_estimated_error = 0.0;  // the helper expects ok; the check is tested elsewhere
     params.environment.wind.air_density = 1.2;
     params.environment.wind.velocity = Eigen::Vector3d(0.0, 0.0, 3.0);
     const auto results = test::step_with_one_and_two_threads(model, params, initial, 20);
@@ -286,6 +244,9 @@ TEST_P(HangingClothWithPd, ReachesRestWithThePinsCarryingTheWholeWeight) {
   SolverParams params = gravity_only(1.0 / 50.0);
   params.pd.global_solver = GetParam();
   params.environment.air_damping = 2.0;  // 1/s
+  // one-sweep solvers lag the exact step at first (their steps report not_converged, rightly);
+  // what is tested here is where they settle
+  params.pd.max_estimated_error = 0.0;
   StepWorkspace workspace;
   for (int n = 0; n < 600; ++n) {
     ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok) << "step " << n;

@@ -1,0 +1,223 @@
+// The integrators on stiff cloth at frame-rate steps (issue 16). Two families:
+//
+// HangingSheet/<method>/<N>: Liu et al. 2013's sheet, 1 m x 1 m, N x N particles, structural,
+// shear and bending springs of 3000 N/m, 1 kg in all, the two corners of one edge pinned, no
+// drag, released horizontal from rest; h = 1/30 s, one step per frame, `sheet_frames` frames.
+// Counters: ms_per_frame (median-free: one run; repeat the benchmark for medians), iterations
+// per step (Newton or L-BFGS iterations, PD local/global iterations, CG iterations of
+// implicit_euler), unconverged steps, lowest point (m, the pins at 0), largest structural stretch
+// (%), and the wall time per frame.
+//
+// Demo/<scenario>/<config>: a shipped scenario with today's integrator (implicit_euler, 10 steps
+// per frame) and with the others at one step per frame: wall time per simulated second and the
+// shape gap to today's run at the same material points, every second (mean and max, % of the
+// cloth's rest diagonal).
+//
+// Results and the machine: docs/benchmarks.md.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <string>
+
+#include "lib/simulation.hpp"
+#include "solver/step.hpp"
+#include "topology/apply_pins.hpp"
+#include "topology/build_cloth_complex.hpp"
+#include "topology/compile.hpp"
+#include "topology/grid_mesh.hpp"
+
+namespace tissu {
+namespace {
+
+constexpr int sheet_frames = 90;
+constexpr double sheet_stiffness_n_per_m = 3000.0;
+
+struct Method {
+  Integrator integrator;
+  PdGlobalSolver global_solver = PdGlobalSolver::direct;
+};
+
+CompiledCloth hanging_sheet(int particles_per_side) {
+  GridOptions grid;
+  grid.cells_u = grid.cells_v = particles_per_side - 1;
+  grid.u_axis = Eigen::Vector3d::UnitX();
+  grid.v_axis = Eigen::Vector3d::UnitY();
+  SpringSettings springs;
+  springs.structural = {true, sheet_stiffness_n_per_m, 0.0};
+  springs.shear = {true, sheet_stiffness_n_per_m, 0.0};
+  springs.bending = {true, sheet_stiffness_n_per_m, 0.0};
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(grid), 1.0, springs, lcc);  // 1 kg/m^2 over 1 m^2
+  PinSelector corners;
+  corners.kind = PinSelector::Kind::corners;
+  corners.corners = {Corner::top_left, Corner::top_right};
+  apply_pins(lcc, {corners}, ClothFrame{grid.u_axis, grid.v_axis});
+  return compile(lcc);
+}
+
+int iterations_of(const SolverParams& params, const StepWorkspace& workspace) {
+  switch (params.integrator) {
+    case Integrator::implicit_euler:
+      return workspace.implicit.cg_iterations;
+    case Integrator::projective_dynamics:
+      return workspace.pd.iterations;
+    case Integrator::newton:
+      return workspace.newton.iterations;
+    case Integrator::quasi_newton:
+      return workspace.quasi_newton.iterations;
+    default:
+      return 0;
+  }
+}
+
+void BM_HangingSheet(benchmark::State& bench, Method method) {
+  const int n = static_cast<int>(bench.range(0));
+  SolverParams params;
+  params.time_step = 1.0 / 30.0;
+  params.integrator = method.integrator;
+  params.pd.global_solver = method.global_solver;
+  CompiledCloth cloth = hanging_sheet(n);
+  const SpringModel& model = cloth.model;
+  int unconverged = 0;
+  long iterations = 0;
+  double wall_s = 0.0;
+  for (auto _ : bench) {
+    State state = cloth.state;
+    StepWorkspace workspace;
+    unconverged = 0;
+    iterations = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int frame = 0; frame < sheet_frames; ++frame) {
+      const StepStatus status = step(model, params, state, workspace);
+      if (status == StepStatus::non_finite) {
+        bench.SkipWithError("non-finite state");
+        return;
+      }
+      unconverged += status == StepStatus::not_converged;
+      iterations += iterations_of(params, workspace);
+    }
+    wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    bench.SetIterationTime(wall_s);
+    cloth.state.time = 0.0;
+    double lowest_m = 0.0, stretch = 0.0;
+    for (int p = 0; p < model.particle_count(); ++p)
+      lowest_m = std::min(lowest_m, state.x[3 * p + 2]);
+    for (int s = 0; s < model.spring_count(); ++s) {
+      if (model.kind[s] != SpringKind::structural) continue;
+      const double length_m = (state.x.segment<3>(3 * model.springs(s, 0)) -
+                               state.x.segment<3>(3 * model.springs(s, 1)))
+                                  .norm();
+      stretch = std::max(stretch, length_m / model.rest_length[s] - 1.0);
+    }
+    bench.counters["lowest_m"] = lowest_m;
+    bench.counters["max_stretch_pct"] = 100.0 * stretch;
+  }
+  bench.counters["ms_per_frame"] = 1e3 * wall_s / sheet_frames;
+  bench.counters["iterations_per_step"] = static_cast<double>(iterations) / sheet_frames;
+  bench.counters["unconverged"] = unconverged;
+  bench.counters["particles"] = model.particle_count();
+}
+
+void sheet_sizes(benchmark::internal::Benchmark* b) {
+  b->Arg(41)->Arg(81)->Arg(128)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+
+BENCHMARK_CAPTURE(BM_HangingSheet, implicit_euler, Method{Integrator::implicit_euler})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, pd_direct, Method{Integrator::projective_dynamics})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, pd_colored_gauss_seidel,
+                  Method{Integrator::projective_dynamics, PdGlobalSolver::colored_gauss_seidel})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, newton, Method{Integrator::newton})->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton, Method{Integrator::quasi_newton})
+    ->Apply(sheet_sizes);
+
+constexpr int frames_between_shape_samples = 30;
+
+struct DemoRun {
+  double wall_s = 0.0;
+  double simulated_s = 0.0;
+  int unconverged = 0;
+  std::vector<MaterialSurface> shapes;
+};
+
+DemoRun run_demo(const std::string& scenario_file, const std::vector<std::string>& overrides) {
+  std::vector<std::string> quiet = overrides;
+  quiet.insert(quiet.end(), {"render.enabled=false", "output.meshes=false"});
+  const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, quiet);
+  DemoRun run;
+  RunOptions options;
+  options.output_dir = std::filesystem::temp_directory_path() / "tissu_integrator_bench";
+  options.on_frame = [&](const FrameStats& row) { run.unconverged += row.unconverged_steps; };
+  options.on_surface = [&](int frame, const MaterialSurface& surface) {
+    if (frame % frames_between_shape_samples == 0) run.shapes.push_back(surface);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult result = run_scenario(scenario, options);
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!result.ok) throw std::runtime_error(result.failure);
+  run.simulated_s = scenario.frames / scenario.frame_rate;
+  return run;
+}
+
+/// Today's run of each scenario (implicit_euler, its own substeps), run once and kept.
+const DemoRun& todays_run(const std::string& scenario_file) {
+  static std::map<std::string, DemoRun> runs;
+  auto found = runs.find(scenario_file);
+  if (found == runs.end()) {
+    found = runs.emplace(scenario_file,
+                         run_demo(scenario_file, {"simulation.integrator=\"implicit_euler\""}))
+                .first;
+  }
+  return found->second;
+}
+
+void BM_Demo(benchmark::State& bench, const std::string& scenario_file,
+             const std::vector<std::string>& overrides) {
+  DemoRun run;
+  for (auto _ : bench) {
+    run = run_demo(scenario_file, overrides);
+    bench.SetIterationTime(run.wall_s);
+  }
+  const DemoRun& today = todays_run(scenario_file);
+  double mean_gap_m = 0.0, max_gap_m = 0.0;
+  for (std::size_t k = 0; k < run.shapes.size(); ++k) {
+    const ShapeDistance d = material_point_distance(run.shapes[k], today.shapes.at(k));
+    mean_gap_m += d.mean_m / run.shapes.size();
+    max_gap_m = std::max(max_gap_m, d.max_m);
+  }
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& X : today.shapes.front().rest_m) box.extend(X);
+  const double size_m = box.diagonal().norm();
+  bench.counters["wall_s_per_sim_s"] = run.wall_s / run.simulated_s;
+  bench.counters["today_wall_s_per_sim_s"] = today.wall_s / today.simulated_s;
+  bench.counters["mean_gap_pct"] = 100.0 * mean_gap_m / size_m;
+  bench.counters["max_gap_pct"] = 100.0 * max_gap_m / size_m;
+  bench.counters["unconverged"] = run.unconverged;
+}
+
+#define TISSU_DEMO(scenario, config, ...)                                         \
+  BENCHMARK_CAPTURE(BM_Demo, scenario##_##config, std::string(#scenario ".json"), \
+                    std::vector<std::string>{__VA_ARGS__})                        \
+      ->Iterations(1)                                                             \
+      ->UseManualTime()                                                           \
+      ->Unit(benchmark::kSecond)
+
+TISSU_DEMO(curtain, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"");
+TISSU_DEMO(curtain, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
+           "simulation.substeps=1");
+TISSU_DEMO(curtain, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
+TISSU_DEMO(curtain, pd_direct_x1, "simulation.integrator=\"projective_dynamics\"",
+           "simulation.substeps=1");
+TISSU_DEMO(drape, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
+           "simulation.substeps=1");
+TISSU_DEMO(drape, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
+
+}  // namespace
+}  // namespace tissu
+
+BENCHMARK_MAIN();

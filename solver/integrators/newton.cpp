@@ -1,0 +1,158 @@
+#include "solver/integrators/newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/forces/external_forces.hpp"
+#include "solver/forces/spring_coupling.hpp"
+#include "solver/forces/spring_force.hpp"
+#include "solver/parallel.hpp"
+
+namespace tissu {
+namespace {
+
+constexpr double max_forcing_term = 0.25;  // loosest relative residual of a linear solve
+
+void check_options(const NewtonOptions& options) {
+  if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.cg_max_iterations < 1) {
+    throw std::invalid_argument(
+        "newton_step: expected newton.tolerance > 0, newton.max_iterations >= 1 and "
+        "newton.cg_max_iterations >= 1");
+  }
+}
+
+// H = M (1/h^2 + c/h) + sum of the springs' positive semidefinite blocks + the couplings' terms
+void assemble_hessian(const SpringModel& model, const StepPotential& potential,
+                      const Eigen::VectorXd& x, NewtonWorkspace& newton) {
+  const int springs = model.spring_count();
+  const double h = potential.time_step_s;
+  const Eigen::Matrix3Xd& start_directions = newton.potential.start_directions;
+  const bool coupled = model.couplings.rows() > 0;
+  const double viscous_scale = potential.spring_damping ? 1.0 / h : 0.0;
+  newton.spring_blocks.resize(springs);
+#pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
+  for (int s = 0; s < springs; ++s) {
+    const auto xi = x.segment<3>(3 * model.springs(s, 0));
+    const auto xj = x.segment<3>(3 * model.springs(s, 1));
+    const auto u_n = start_directions.col(s);
+    Eigen::Matrix3d block =
+        -spring_force_jacobian_clamped(xi, xj, model.stiffness[s], model.rest_length[s]) +
+        (viscous_scale * model.damping[s]) * (u_n * u_n.transpose());
+    if (coupled) {  // evaluate_step_potential() left the couplings' tensions at x
+      block -= coupling_tension_jacobian(xi, xj, newton.potential.coupling_tension[s], true);
+    }
+    newton.spring_blocks[s] = block;
+  }
+  newton.diagonal = (1.0 / (h * h) + potential.air_damping / h) * model.mass;
+  update_spring_block_pattern(model, newton.pattern);
+  assemble_spring_block_matrix(model, newton.pattern, newton.spring_blocks, newton.diagonal, true,
+                               newton.hessian);
+  if (coupled) add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.hessian);
+}
+
+// correction ~ -H^-1 gradient by the preconditioned conjugate gradient from 0, to a residual of
+// forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
+// curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
+// the preconditioned gradient if that is nothing yet.
+int solve_newton_system(const SpringModel& model, NewtonWorkspace& newton, double forcing_term,
+                        int max_iterations) {
+  const Eigen::Index dofs = newton.gradient.size();
+  newton.correction.setZero(dofs);
+  newton.residual = -newton.gradient;
+  newton.preconditioner.solve(newton.system, newton.residual, newton.preconditioned);
+  newton.search = newton.preconditioned;
+  double rz = newton.residual.dot(newton.preconditioned);
+  const double target_n = forcing_term * newton.gradient.norm();
+  int iteration = 0;
+  while (iteration < max_iterations && newton.residual.norm() > target_n) {
+    newton.hessian_search.noalias() = newton.hessian * newton.search;
+    const double curvature = newton.search.dot(newton.hessian_search);
+    if (!(curvature > 0.0)) {
+      if (iteration == 0) newton.correction = newton.search;
+      break;
+    }
+    const double step = rz / curvature;
+    newton.correction += step * newton.search;
+    newton.residual -= step * newton.hessian_search;
+    newton.preconditioner.solve(newton.system, newton.residual, newton.preconditioned);
+    const double rz_next = newton.residual.dot(newton.preconditioned);
+    newton.search = newton.preconditioned + (rz_next / rz) * newton.search;
+    rz = rz_next;
+    ++iteration;
+  }
+  (void)model;
+  return iteration;
+}
+
+}  // namespace
+
+StepStatus newton_step(const SpringModel& model, const SolverParams& params, State& state,
+                       StepWorkspace& workspace) {
+  const NewtonOptions& options = params.newton;
+  check_options(options);
+  const double h = params.time_step;
+  const int particles = model.particle_count();
+  NewtonWorkspace& newton = workspace.newton;
+
+  Environment explicit_forces = params.environment;
+  explicit_forces.air_damping = 0.0;  // air damping is in the potential, implicit
+  accumulate_external_forces(model, explicit_forces, state.time, state.x, state.v,
+                             newton.triangle_forces, newton.external_force);
+  predict_step(model, h, state, newton.external_force, newton.x, newton.inertial);
+  if (!newton.inertial.allFinite()) return StepStatus::non_finite;
+  update_pd_system(model, h, newton.system);
+  if (!newton.preconditioner.factorize(newton.system)) return StepStatus::non_finite;
+  newton.preconditioned.setZero(3 * particles);  // its pinned entries stay 0 for this model
+
+  StepPotential potential;
+  potential.time_step_s = h;
+  potential.start_x = &state.x;
+  potential.inertial = &newton.inertial;
+  potential.air_damping = params.environment.air_damping;
+  prepare_step_potential(model, potential, newton.potential);
+  double energy_j =
+      evaluate_step_potential(model, potential, newton.x, newton.potential, &newton.gradient);
+  if (!std::isfinite(energy_j) || !newton.gradient.allFinite()) return StepStatus::non_finite;
+  const double force_scale_n = step_force_scale(model, potential);
+  const double first_gradient_n = newton.gradient.norm();
+
+  newton.iterations = 0;
+  newton.cg_iterations = 0;
+  bool converged = newton.gradient.norm() == 0.0;
+  while (!converged && newton.iterations < options.max_iterations) {
+    assemble_hessian(model, potential, newton.x, newton);
+    const double forcing_term = std::min(
+        max_forcing_term,
+        std::sqrt(relative_residual(newton.gradient.norm(), force_scale_n, first_gradient_n)));
+    newton.cg_iterations +=
+        solve_newton_system(model, newton, forcing_term, options.cg_max_iterations);
+    double trial_energy_j = energy_j;
+    if (!backtracking_line_search(model, potential, newton.x, newton.gradient, energy_j,
+                                  newton.correction, newton.potential, newton.trial_x,
+                                  newton.trial_gradient, trial_energy_j)) {
+      break;  // no decrease along the Newton direction: round-off, or an indefinite coupling
+    }
+    ++newton.iterations;
+    newton.correction_ratio = relative_correction(model, h, newton.correction, newton.trial_x,
+                                                  state.x, newton.external_force, 1.0);
+    converged = newton.correction_ratio <= options.tolerance;
+    newton.x.swap(newton.trial_x);
+    newton.gradient.swap(newton.trial_gradient);
+    energy_j = trial_energy_j;
+  }
+  if (!newton.x.allFinite()) return StepStatus::non_finite;
+
+  const double inverse_h = 1.0 / h;
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+  for (int p = 0; p < particles; ++p) {
+    if (model.inverse_mass[p] != 0.0) {
+      state.v.segment<3>(3 * p) =
+          inverse_h * (newton.x.segment<3>(3 * p) - state.x.segment<3>(3 * p));
+    }
+    state.x.segment<3>(3 * p) = newton.x.segment<3>(3 * p);
+  }
+  return converged ? StepStatus::ok : StepStatus::not_converged;
+}
+
+}  // namespace tissu
