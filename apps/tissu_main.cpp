@@ -4,10 +4,12 @@
 #include <cstdio>
 
 #include "apps/material_test_command.hpp"
+#include "apps/passive_openmp.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
 
 int main(int argc, char** argv) {
+  tissu::prefer_passive_openmp_waiting(argv);
   CLI::App app{"tissu: adaptive mass-spring cloth simulator"};
   app.require_subcommand(1);
 

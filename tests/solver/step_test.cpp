@@ -15,7 +15,8 @@ namespace tissu {
 namespace {
 
 const Integrator all_integrators[] = {Integrator::symplectic_euler, Integrator::position_verlet,
-                                      Integrator::implicit_euler, Integrator::projective_dynamics};
+                                      Integrator::implicit_euler,   Integrator::projective_dynamics,
+                                      Integrator::newton,           Integrator::quasi_newton};
 
 // a 12 x 10 sheet, 0.55 m x 0.45 m in the z = 0 plane, held by two corners (particles 0 and 11)
 SpringModel sheet(State& state) {

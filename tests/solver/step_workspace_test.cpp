@@ -60,7 +60,9 @@ TEST(StepWorkspace, ANewModelOfTheSameSizesIsSteppedAsWithAFreshWorkspace) {
                          {"position_verlet", Integrator::position_verlet},
                          {"implicit_euler", Integrator::implicit_euler},
                          {"pd direct", Integrator::projective_dynamics},
-                         {"pd jacobi", Integrator::projective_dynamics, PdGlobalSolver::jacobi}}) {
+                         {"pd jacobi", Integrator::projective_dynamics, PdGlobalSolver::jacobi},
+                         {"newton", Integrator::newton},
+                         {"quasi_newton", Integrator::quasi_newton}}) {
     SCOPED_TRACE(c.name);
     SolverParams params;
     params.integrator = c.integrator;
