@@ -19,7 +19,7 @@ struct FrameStats {
   double kinetic_energy = 0.0;    ///< (J)
   double potential_energy = 0.0;  ///< elastic + gravitational (J)
   double step_ms = 0.0;           ///< wall time of the frame's solver steps (ms)
-  int unconverged_steps = 0;      ///< implicit steps whose linear solve missed its tolerance
+  int unconverged_steps = 0;      ///< steps that missed their integrator's tolerance
   int splits = 0;    ///< edges bisected by adaptive refinement after this frame, and around crack
                      ///< tips during it
   int merges = 0;    ///< bisections undone by adaptive coarsening after this frame

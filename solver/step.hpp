@@ -11,7 +11,7 @@ namespace tissu {
 enum class StepStatus {
   ok,
   non_finite,     ///< a position or velocity became NaN or infinite; the state is not usable
-  not_converged,  ///< the implicit linear solve did not reach its tolerance
+  not_converged,  ///< the step missed its integrator's tolerance (CG, Newton, L-BFGS, PD's check)
 };
 
 const char* to_string(StepStatus status);

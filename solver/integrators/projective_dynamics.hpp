@@ -39,8 +39,12 @@ namespace tissu {
 /// - Spring couplings (model.couplings) have no projection: a model with any is refused.
 /// Throws std::invalid_argument on options out of range (see ProjectiveDynamicsOptions) or on a
 /// model with couplings.
+/// - With an iterative global solver, the step is checked after its iterations
+///   (ProjectiveDynamicsOptions::max_estimated_error): one exact solve of the last global step,
+///   with the factorisation the direct solver uses, tells how much error the sweeps left.
 /// Returns non_finite if the prediction is not finite (state unchanged), not_converged if
-/// params.pd.tolerance > 0 was not met within params.pd.iterations (state advanced anyway).
+/// params.pd.tolerance > 0 was not met within params.pd.iterations or the check failed (state
+/// advanced anyway).
 /// Does not advance state.time (step() does).
 StepStatus projective_dynamics_step(const SpringModel& model, const SolverParams& params,
                                     State& state, StepWorkspace& workspace);

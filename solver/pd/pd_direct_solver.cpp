@@ -30,14 +30,15 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
   }
   m_generation = system.generation;
   m_inverse_d = m_ldlt->vectorD().cwiseInverse();  // vectorD() returns a copy: keep it
-  m_rhs.resize(free_count, 3);
-  m_solution.resize(free_count, 3);
+  m_solution.resize(3, free_count);
   return true;
 }
 
 bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eigen::VectorXd& p) {
   if (!factorize(system)) return false;
   const int free_count = static_cast<int>(system.free_particles.size());
+  const auto& permutation = m_ldlt->permutationP().indices();  // row -> permuted row
+  // z = P b, b_row = c_i + sum over pinned neighbours j of s_ij p_j
 #pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int row = 0; row < free_count; ++row) {
     const int i = system.free_particles[row];
@@ -46,19 +47,31 @@ bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eig
       const int j = system.neighbours[e];
       if (system.pinned[j]) b += system.weights[e] * p.segment<3>(3 * j);
     }
-    m_rhs.row(row) = b.transpose();
+    m_solution.col(permutation[row]) = b;
   }
-  // x = P^-1 U^-1 D^-1 L^-1 P b, step by step into the kept buffers (Eigen's solve() allocates)
-  const Eigen::SimplicialLDLT<Matrix>& ldlt = *m_ldlt;
-  m_solution.noalias() = ldlt.permutationP() * m_rhs;
-  ldlt.matrixL().solveInPlace(m_solution);
-  m_solution.array().colwise() *= m_inverse_d.array();
-  ldlt.matrixU().solveInPlace(m_solution);
-  m_rhs.noalias() = ldlt.permutationPinv() * m_solution;
-  m_solution.swap(m_rhs);
+  // L D L^T z = z in place, x, y and z of a particle together: each triangular sweep reads L
+  // once for the three coordinates (Eigen's solveInPlace reads it once per right-hand side column)
+  const Matrix& lower = m_ldlt->matrixL().nestedExpression();  // unit lower, CSC
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  const double* values = lower.valuePtr();
+  for (int column = 0; column < free_count; ++column) {  // L y = z
+    const Eigen::Vector3d y = m_solution.col(column);
+    for (int k = outer[column]; k < outer[column + 1]; ++k) {
+      if (inner[k] > column) m_solution.col(inner[k]) -= values[k] * y;
+    }
+  }
+  m_solution.array().rowwise() *= m_inverse_d.transpose().array();  // D^-1
+  for (int column = free_count - 1; column >= 0; --column) {        // L^T x = y
+    Eigen::Vector3d x = m_solution.col(column);
+    for (int k = outer[column]; k < outer[column + 1]; ++k) {
+      if (inner[k] > column) x -= values[k] * m_solution.col(inner[k]);
+    }
+    m_solution.col(column) = x;
+  }
 #pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int row = 0; row < free_count; ++row) {
-    p.segment<3>(3 * system.free_particles[row]) = m_solution.row(row).transpose();
+    p.segment<3>(3 * system.free_particles[row]) = m_solution.col(permutation[row]);
   }
   return true;
 }

@@ -51,8 +51,7 @@ class PdDirectSolver {
   std::uint64_t m_generation = 0;  ///< system generation of the factorisation, 0 = none
   int m_factorizations = 0;
   Eigen::VectorXd m_inverse_d;  ///< #F 1 / D of the LDL^T factorisation (s^2/kg)
-  Eigen::MatrixX3d m_rhs;       ///< #F x 3 right-hand side
-  Eigen::MatrixX3d m_solution;  ///< #F x 3 positions of the free particles (m)
+  Eigen::Matrix3Xd m_solution;  ///< 3 x #F right-hand side, then solution, in permuted order (m)
 };
 
 }  // namespace tissu
