@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "solver/forces/external_forces.hpp"
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/parallel.hpp"
@@ -27,7 +26,7 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
                       const Eigen::VectorXd& x, NewtonWorkspace& newton) {
   const int springs = model.spring_count();
   const double h = potential.time_step_s;
-  const Eigen::Matrix3Xd& start_directions = newton.potential.start_directions;
+  const Eigen::Matrix3Xd& start_directions = newton.common.potential.start_directions;
   const bool coupled = model.couplings.rows() > 0;
   const double viscous_scale = potential.spring_damping ? 1.0 / h : 0.0;
   newton.spring_blocks.resize(springs);
@@ -40,7 +39,7 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
         -spring_force_jacobian_clamped(xi, xj, model.stiffness[s], model.rest_length[s]) +
         (viscous_scale * model.damping[s]) * (u_n * u_n.transpose());
     if (coupled) {  // evaluate_step_potential() left the couplings' tensions at x
-      block -= coupling_tension_jacobian(xi, xj, newton.potential.coupling_tension[s], true);
+      block -= coupling_tension_jacobian(xi, xj, newton.common.potential.coupling_tension[s], true);
     }
     newton.spring_blocks[s] = block;
   }
@@ -55,15 +54,15 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
 // forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
 // curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
 // the preconditioned gradient if that is nothing yet.
-int solve_newton_system(const SpringModel& model, NewtonWorkspace& newton, double forcing_term,
-                        int max_iterations) {
-  const Eigen::Index dofs = newton.gradient.size();
+int solve_newton_system(NewtonWorkspace& newton, double forcing_term, int max_iterations) {
+  const Eigen::Index dofs = newton.common.gradient.size();
   newton.correction.setZero(dofs);
-  newton.residual = -newton.gradient;
-  newton.preconditioner.solve(newton.system, newton.residual, newton.preconditioned);
-  newton.search = newton.preconditioned;
-  double rz = newton.residual.dot(newton.preconditioned);
-  const double target_n = forcing_term * newton.gradient.norm();
+  newton.residual = -newton.common.gradient;
+  newton.common.pd_matrix.solve(newton.common.system, newton.residual,
+                                newton.common.preconditioned);
+  newton.search = newton.common.preconditioned;
+  double rz = newton.residual.dot(newton.common.preconditioned);
+  const double target_n = forcing_term * newton.common.gradient.norm();
   int iteration = 0;
   while (iteration < max_iterations && newton.residual.norm() > target_n) {
     newton.hessian_search.noalias() = newton.hessian * newton.search;
@@ -75,13 +74,13 @@ int solve_newton_system(const SpringModel& model, NewtonWorkspace& newton, doubl
     const double step = rz / curvature;
     newton.correction += step * newton.search;
     newton.residual -= step * newton.hessian_search;
-    newton.preconditioner.solve(newton.system, newton.residual, newton.preconditioned);
-    const double rz_next = newton.residual.dot(newton.preconditioned);
-    newton.search = newton.preconditioned + (rz_next / rz) * newton.search;
+    newton.common.pd_matrix.solve(newton.common.system, newton.residual,
+                                  newton.common.preconditioned);
+    const double rz_next = newton.residual.dot(newton.common.preconditioned);
+    newton.search = newton.common.preconditioned + (rz_next / rz) * newton.search;
     rz = rz_next;
     ++iteration;
   }
-  (void)model;
   return iteration;
 }
 
@@ -95,63 +94,42 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
   const int particles = model.particle_count();
   NewtonWorkspace& newton = workspace.newton;
 
-  Environment explicit_forces = params.environment;
-  explicit_forces.air_damping = 0.0;  // air damping is in the potential, implicit
-  accumulate_external_forces(model, explicit_forces, state.time, state.x, state.v,
-                             newton.triangle_forces, newton.external_force);
-  predict_step(model, h, state, newton.external_force, newton.x, newton.inertial);
-  if (!newton.inertial.allFinite()) return StepStatus::non_finite;
-  update_pd_system(model, h, newton.system);
-  if (!newton.preconditioner.factorize(newton.system)) return StepStatus::non_finite;
-  newton.preconditioned.setZero(3 * particles);  // its pinned entries stay 0 for this model
-
   StepPotential potential;
-  potential.time_step_s = h;
-  potential.start_x = &state.x;
-  potential.inertial = &newton.inertial;
-  potential.air_damping = params.environment.air_damping;
-  prepare_step_potential(model, potential, newton.potential);
-  double energy_j =
-      evaluate_step_potential(model, potential, newton.x, newton.potential, &newton.gradient);
-  if (!std::isfinite(energy_j) || !newton.gradient.allFinite()) return StepStatus::non_finite;
+  double energy_j = 0.0;
+  if (!start_step_minimisation(model, params, state, newton.common, potential, energy_j)) {
+    return StepStatus::non_finite;
+  }
   const double force_scale_n = step_force_scale(model, potential);
-  const double first_gradient_n = newton.gradient.norm();
+  const double first_gradient_n = newton.common.gradient.norm();
 
   newton.iterations = 0;
   newton.cg_iterations = 0;
-  bool converged = newton.gradient.norm() == 0.0;
+  bool converged = first_gradient_n == 0.0;
   while (!converged && newton.iterations < options.max_iterations) {
-    assemble_hessian(model, potential, newton.x, newton);
-    const double forcing_term = std::min(
-        max_forcing_term,
-        std::sqrt(relative_residual(newton.gradient.norm(), force_scale_n, first_gradient_n)));
-    newton.cg_iterations +=
-        solve_newton_system(model, newton, forcing_term, options.cg_max_iterations);
+    assemble_hessian(model, potential, newton.common.x, newton);
+    const double forcing_term =
+        std::min(max_forcing_term, std::sqrt(relative_residual(newton.common.gradient.norm(),
+                                                               force_scale_n, first_gradient_n)));
+    newton.cg_iterations += solve_newton_system(newton, forcing_term, options.cg_max_iterations);
     double trial_energy_j = energy_j;
-    if (!backtracking_line_search(model, potential, newton.x, newton.gradient, energy_j,
-                                  newton.correction, newton.potential, newton.trial_x,
-                                  newton.trial_gradient, trial_energy_j)) {
+    if (!backtracking_line_search(model, potential, newton.common.x, newton.common.gradient,
+                                  energy_j, newton.correction, newton.common.potential,
+                                  newton.common.trial_x, newton.common.trial_gradient,
+                                  trial_energy_j)) {
       break;  // no decrease along the Newton direction: round-off, or an indefinite coupling
     }
     ++newton.iterations;
-    newton.correction_ratio = relative_correction(model, h, newton.correction, newton.trial_x,
-                                                  state.x, newton.external_force, 1.0);
+    newton.correction_ratio =
+        relative_correction(model, h, newton.correction, newton.common.trial_x, state.x,
+                            newton.common.external_force, 1.0);
     converged = newton.correction_ratio <= options.tolerance;
-    newton.x.swap(newton.trial_x);
-    newton.gradient.swap(newton.trial_gradient);
+    newton.common.x.swap(newton.common.trial_x);
+    newton.common.gradient.swap(newton.common.trial_gradient);
     energy_j = trial_energy_j;
   }
-  if (!newton.x.allFinite()) return StepStatus::non_finite;
+  if (!newton.common.x.allFinite()) return StepStatus::non_finite;
 
-  const double inverse_h = 1.0 / h;
-#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
-  for (int p = 0; p < particles; ++p) {
-    if (model.inverse_mass[p] != 0.0) {
-      state.v.segment<3>(3 * p) =
-          inverse_h * (newton.x.segment<3>(3 * p) - state.x.segment<3>(3 * p));
-    }
-    state.x.segment<3>(3 * p) = newton.x.segment<3>(3 * p);
-  }
+  finish_step_minimisation(model, h, newton.common.x, state);
   return converged ? StepStatus::ok : StepStatus::not_converged;
 }
 

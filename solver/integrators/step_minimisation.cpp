@@ -1,0 +1,48 @@
+#include "solver/integrators/step_minimisation.hpp"
+
+#include <cmath>
+
+#include "solver/forces/external_forces.hpp"
+#include "solver/parallel.hpp"
+
+namespace tissu {
+
+bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
+                             const State& state, MinimisationWorkspace& workspace,
+                             StepPotential& potential, double& energy_j) {
+  const double h = params.time_step;
+  Environment explicit_forces = params.environment;
+  explicit_forces.air_damping = 0.0;  // air damping is in the potential, implicit
+  accumulate_external_forces(model, explicit_forces, state.time, state.x, state.v,
+                             workspace.triangle_forces, workspace.external_force);
+  predict_step(model, h, state, workspace.external_force, workspace.x, workspace.inertial);
+  if (!workspace.inertial.allFinite()) return false;
+  update_pd_system(model, h, workspace.system);
+  if (!workspace.pd_matrix.factorize(workspace.system)) return false;
+  workspace.preconditioned.setZero(3 * model.particle_count());  // pinned entries stay 0
+
+  potential = StepPotential{};
+  potential.time_step_s = h;
+  potential.start_x = &state.x;
+  potential.inertial = &workspace.inertial;
+  potential.air_damping = params.environment.air_damping;
+  prepare_step_potential(model, potential, workspace.potential);
+  energy_j = evaluate_step_potential(model, potential, workspace.x, workspace.potential,
+                                     &workspace.gradient);
+  return std::isfinite(energy_j) && workspace.gradient.allFinite();
+}
+
+void finish_step_minimisation(const SpringModel& model, double time_step_s,
+                              const Eigen::VectorXd& x, State& state) {
+  const int particles = model.particle_count();
+  const double inverse_h = 1.0 / time_step_s;
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+  for (int p = 0; p < particles; ++p) {
+    if (model.inverse_mass[p] != 0.0) {
+      state.v.segment<3>(3 * p) = inverse_h * (x.segment<3>(3 * p) - state.x.segment<3>(3 * p));
+    }
+    state.x.segment<3>(3 * p) = x.segment<3>(3 * p);
+  }
+}
+
+}  // namespace tissu
