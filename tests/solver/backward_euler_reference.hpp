@@ -1,12 +1,33 @@
 #pragma once
-// The exact backward-Euler step of a small spring model, for the integrators' tests.
+// A small perturbed sheet and its exact backward-Euler step, for the integrators' tests.
 
 #include <Eigen/Dense>
+#include <random>
 
 #include "solver/forces/spring_force.hpp"
 #include "solver/spring_model.hpp"
+#include "tests/solver/test_models.hpp"
 
 namespace tissu::test {
+
+/// A 6 x 6 sheet (0.1 m spacing, 0.01 kg particles, 100 N/m springs of damping `damping` N s/m)
+/// held by two corners, positions and velocities mildly perturbed from rest by `seed`.
+inline SpringModel perturbed_sheet(State& state, double damping, unsigned seed) {
+  SpringModel model = grid_model(6, 6, 0.1, 0.01, 100.0, damping, state);
+  model.pinned[0] = 1;
+  model.pinned[5] = 1;
+  finalize_model(model);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int p = 0; p < model.particle_count(); ++p) {
+    if (model.pinned[p]) continue;
+    for (int k = 0; k < 3; ++k) {
+      state.x[3 * p + k] += 0.01 * unit(rng);
+      state.v[3 * p + k] = 0.1 * unit(rng);
+    }
+  }
+  return model;
+}
 
 // exact backward Euler by Newton's method to round-off: M (x1 - x0 - h v0) / h^2 = f(x1) + M g,
 // dense, free degrees of freedom only, exact (unclamped) spring Jacobians

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "solver/forces/spring_force.hpp"
 #include "solver/step.hpp"
@@ -28,24 +27,6 @@ SolverParams minimiser(Integrator integrator, double h, double tolerance) {
   return params;
 }
 
-// 6 x 6 sheet held by two corners, positions and velocities mildly perturbed
-SpringModel perturbed_sheet(State& state, double damping, unsigned seed) {
-  SpringModel model = test::grid_model(6, 6, 0.1, 0.01, 100.0, damping, state);
-  model.pinned[0] = 1;
-  model.pinned[5] = 1;
-  finalize_model(model);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int p = 0; p < model.particle_count(); ++p) {
-    if (model.pinned[p]) continue;
-    for (int k = 0; k < 3; ++k) {
-      state.x[3 * p + k] += 0.01 * unit(rng);
-      state.v[3 * p + k] = 0.1 * unit(rng);
-    }
-  }
-  return model;
-}
-
 // the stiff hanging sheet of docs/benchmarks.md on n x n particles: 1 m, 1 kg, 3000 N/m springs,
 // two corners of one edge pinned
 SpringModel stiff_sheet(int n, State& state) {
@@ -62,7 +43,7 @@ TEST(BackwardEulerMinimisers, ReachTheExactBackwardEulerStep) {
   for (const Integrator integrator : minimisers) {
     for (const double h : {1e-3, 1.0 / 60.0}) {
       State state;
-      const SpringModel model = perturbed_sheet(state, 0.0, 7);
+      const SpringModel model = test::perturbed_sheet(state, 0.0, 7);
       const SolverParams params = minimiser(integrator, h, 1e-12);
       const Eigen::VectorXd reference =
           test::backward_euler_positions(model, state, h, params.environment.gravity);
@@ -85,7 +66,7 @@ TEST(BackwardEulerMinimisers, SolveTheDampedBackwardEulerEquation) {
   // of the potential's code, to 1e-8 of the weight
   for (const Integrator integrator : minimisers) {
     State state;
-    const SpringModel model = perturbed_sheet(state, 0.3, 5);
+    const SpringModel model = test::perturbed_sheet(state, 0.3, 5);
     SolverParams params = minimiser(integrator, 1.0 / 30.0, 1e-12);
     params.environment.air_damping = 0.4;
     const double c = params.environment.air_damping;
@@ -148,7 +129,7 @@ TEST(BackwardEulerMinimisers, StopAtTheirToleranceAndSaySoWhenTheyCannot) {
 TEST(BackwardEulerMinimisers, PinnedParticlesFollowTheirVelocityAndTheSheetFalls) {
   for (const Integrator integrator : minimisers) {
     State state;
-    SpringModel model = perturbed_sheet(state, 0.1, 3);
+    SpringModel model = test::perturbed_sheet(state, 0.1, 3);
     const State initial = state;
     state.v.segment<3>(0) = Eigen::Vector3d(0.0, 0.0, 0.5);  // a pinned corner moving up
     const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-3);
@@ -183,7 +164,7 @@ TEST(BackwardEulerMinimisers, AReusedWorkspaceFollowsARecompiledModel) {
   // workspace gives the fresh workspace's bits
   for (const Integrator integrator : minimisers) {
     State state;
-    SpringModel model = perturbed_sheet(state, 0.1, 9);
+    SpringModel model = test::perturbed_sheet(state, 0.1, 9);
     const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-4);
     StepWorkspace reused;
     State first = state;

@@ -40,31 +40,13 @@ SolverParams gravity_only(double h) {
   return params;
 }
 
-// 6 x 6 sheet held by two corners, positions and velocities mildly perturbed, no spring damping
-SpringModel perturbed_sheet(State& state, unsigned seed) {
-  SpringModel model = test::grid_model(6, 6, 0.1, 0.01, 100.0, 0.0, state);
-  model.pinned[0] = 1;
-  model.pinned[5] = 1;
-  finalize_model(model);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int p = 0; p < model.particle_count(); ++p) {
-    if (model.pinned[p]) continue;
-    for (int k = 0; k < 3; ++k) {
-      state.x[3 * p + k] += 0.01 * unit(rng);
-      state.v[3 * p + k] = 0.1 * unit(rng);
-    }
-  }
-  return model;
-}
-
 TEST(ProjectiveDynamics, ConvergedStepIsTheExactBackwardEulerStep) {
   // at convergence PD minimises the backward-Euler objective (Liu et al. 2013): it must agree with
   // Newton's method on that objective to round-off, at a small and at a large time step
   for (const double h : {1e-3, 1.0 / 60.0}) {
     for (const PdGlobalSolver solver : all_solvers) {
       State state;
-      const SpringModel model = perturbed_sheet(state, 7);
+      const SpringModel model = test::perturbed_sheet(state, 0.0, 7);
       SolverParams params = gravity_only(h);
       params.pd.global_solver = solver;
       // local/global iterations converge linearly, slowly at large h (Liu et al. 2013): at
@@ -122,7 +104,7 @@ TEST(ProjectiveDynamics, MatchesImplicitEulerAtSmallTimeSteps) {
 TEST(ProjectiveDynamics, PinnedParticlesStayFixedAndTheModelIsUntouched) {
   for (const PdGlobalSolver solver : all_solvers) {
     State state;
-    const SpringModel model = perturbed_sheet(state, 3);
+    const SpringModel model = test::perturbed_sheet(state, 0.0, 3);
     const SpringModel copy = model;
     const State initial = state;
     SolverParams params = gravity_only(1.0 / 60.0);
@@ -154,7 +136,7 @@ TEST(ProjectiveDynamics, PinnedParticlesStayFixedAndTheModelIsUntouched) {
 TEST(ProjectiveDynamics, NonFiniteInputGivesNonFinite) {
   for (const PdGlobalSolver solver : all_solvers) {
     State state;
-    const SpringModel model = perturbed_sheet(state, 5);
+    const SpringModel model = test::perturbed_sheet(state, 0.0, 5);
     SolverParams params = gravity_only(0.01);
     params.pd.global_solver = solver;
     State with_nan = state;
@@ -168,7 +150,7 @@ TEST(ProjectiveDynamics, NonFiniteInputGivesNonFinite) {
 
 TEST(ProjectiveDynamics, ReportsAnUnmetTolerance) {
   State state;
-  const SpringModel model = perturbed_sheet(state, 5);
+  const SpringModel model = test::perturbed_sheet(state, 0.0, 5);
   SolverParams params = gravity_only(1.0 / 60.0);
   params.pd.global_solver = PdGlobalSolver::jacobi;
   params.pd.iterations = 2;
@@ -185,7 +167,7 @@ TEST(ProjectiveDynamics, ReportsAnUnmetTolerance) {
 
 TEST(ProjectiveDynamics, RejectsOptionsOutOfRange) {
   State state;
-  const SpringModel model = perturbed_sheet(state, 5);
+  const SpringModel model = test::perturbed_sheet(state, 0.0, 5);
   const auto rejects = [&](auto change) {
     SolverParams params = gravity_only(0.01);
     change(params.pd);
