@@ -81,7 +81,7 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
   }
   workspace.spring_energy_j.resize(springs);
   workspace.spring_forces.resize(3, springs);
-  const double viscous_scale = potential.spring_damping ? 1.0 / h : 0.0;  // nu/h (N/m per N s/m)
+  const double viscous_scale = 1.0 / h;  // nu/h (N/m per N s/m)
 
 #pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
   for (int s = 0; s < springs; ++s) {

@@ -25,8 +25,7 @@ struct StepPotential {
   double time_step_s = 0.0;                   ///< h (s)
   const Eigen::VectorXd* start_x = nullptr;   ///< 3#P x_n (m)
   const Eigen::VectorXd* inertial = nullptr;  ///< 3#P y (m)
-  double air_damping = 0.0;                   ///< c (1/s) taken implicitly; 0 when f_ext has it
-  bool spring_damping = true;                 ///< include the viscous springs (model.damping)
+  double air_damping = 0.0;                   ///< c (1/s), taken implicitly
 };
 
 /// Per-spring scratch of evaluate_step_potential(); meaningless between calls.

@@ -28,7 +28,7 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
   const double h = potential.time_step_s;
   const Eigen::Matrix3Xd& start_directions = newton.common.potential.start_directions;
   const bool coupled = model.couplings.rows() > 0;
-  const double viscous_scale = potential.spring_damping ? 1.0 / h : 0.0;
+  const double viscous_scale = 1.0 / h;  // nu/h (N/m per N s/m)
   newton.spring_blocks.resize(springs);
 #pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
   for (int s = 0; s < springs; ++s) {

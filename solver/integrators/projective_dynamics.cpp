@@ -1,11 +1,10 @@
 #include "solver/integrators/projective_dynamics.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "solver/forces/external_forces.hpp"
 #include "solver/forces/spring_force.hpp"
+#include "solver/integrators/incremental_potential.hpp"
 #include "solver/parallel.hpp"
 
 namespace tissu {
@@ -51,6 +50,7 @@ void check_options(const ProjectiveDynamicsOptions& options) {
 // displacement or, at rest, 1 % of what gravity moves a particle in a step: a frozen sheet moves
 // little and has much left. Needs the direct solver's factorisation (made once per model and h).
 constexpr double rest_fraction = 0.01;
+
 double estimated_step_error(const SpringModel& model, double h, const State& state,
                             ProjectiveDynamicsWorkspace& pd) {
   pd.correction = pd.positions;  // pinned entries: their prescribed positions, read by the solve
