@@ -91,7 +91,6 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
   const NewtonOptions& options = params.newton;
   check_options(options);
   const double h = params.time_step;
-  const int particles = model.particle_count();
   NewtonWorkspace& newton = workspace.newton;
 
   StepPotential potential;
