@@ -133,6 +133,37 @@ inline SpringModel grid_model(int nx, int ny, double spacing, double particle_ma
   return model;
 }
 
+/// Couples every two structural or shear springs that are edges of one of the model's triangles,
+/// with random stiffnesses of either sign (N/m).
+inline void couple_triangle_edges(SpringModel& model, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> gamma(-300.0, 300.0);
+  const auto spring_between = [&](int p, int q) {
+    for (int s = 0; s < model.spring_count(); ++s) {
+      if (model.kind[s] == SpringKind::bending) continue;
+      if ((model.springs(s, 0) == p && model.springs(s, 1) == q) ||
+          (model.springs(s, 0) == q && model.springs(s, 1) == p))
+        return s;
+    }
+    return -1;
+  };
+  std::vector<std::pair<int, int>> pairs;
+  for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
+    int edge[3];
+    for (int k = 0; k < 3; ++k) {
+      edge[k] = spring_between(model.triangles(t, k), model.triangles(t, (k + 1) % 3));
+    }
+    for (int k = 0; k < 3; ++k) pairs.emplace_back(edge[k], edge[(k + 1) % 3]);
+  }
+  model.couplings.resize(static_cast<Eigen::Index>(pairs.size()), 2);
+  model.coupling_stiffness.resize(static_cast<Eigen::Index>(pairs.size()));
+  for (std::size_t c = 0; c < pairs.size(); ++c) {
+    model.couplings.row(c) << pairs[c].first, pairs[c].second;
+    model.coupling_stiffness[c] = gamma(rng);
+  }
+  finalize_model(model);
+}
+
 /// `lower` and `upper` in one model (upper's particles after lower's), and their states joined
 /// (velocities zero).
 inline SpringModel joined_models(const SpringModel& lower, const State& lower_state,

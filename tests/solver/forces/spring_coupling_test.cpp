@@ -19,41 +19,10 @@ namespace {
 
 constexpr double fd_step = 1e-6;  // m
 
-/// Couples every two structural or shear springs that are edges of one of the model's triangles,
-/// with random stiffnesses of either sign (N/m).
-void couple_triangle_edges(SpringModel& model, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> gamma(-300.0, 300.0);
-  const auto spring_between = [&](int p, int q) {
-    for (int s = 0; s < model.spring_count(); ++s) {
-      if (model.kind[s] == SpringKind::bending) continue;
-      if ((model.springs(s, 0) == p && model.springs(s, 1) == q) ||
-          (model.springs(s, 0) == q && model.springs(s, 1) == p))
-        return s;
-    }
-    return -1;
-  };
-  std::vector<std::pair<int, int>> pairs;
-  for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
-    int edge[3];
-    for (int k = 0; k < 3; ++k) {
-      edge[k] = spring_between(model.triangles(t, k), model.triangles(t, (k + 1) % 3));
-    }
-    for (int k = 0; k < 3; ++k) pairs.emplace_back(edge[k], edge[(k + 1) % 3]);
-  }
-  model.couplings.resize(static_cast<Eigen::Index>(pairs.size()), 2);
-  model.coupling_stiffness.resize(static_cast<Eigen::Index>(pairs.size()));
-  for (std::size_t c = 0; c < pairs.size(); ++c) {
-    model.couplings.row(c) << pairs[c].first, pairs[c].second;
-    model.coupling_stiffness[c] = gamma(rng);
-  }
-  finalize_model(model);
-}
-
 /// A 3 x 3 grid of coupled triangles, its particles moved off the rest shape in 3D.
 SpringModel deformed_coupled_grid(unsigned seed, State& state) {
   SpringModel model = test::grid_model(3, 3, 0.1, 0.01, 500.0, 0.0, state);
-  couple_triangle_edges(model, seed);
+  test::couple_triangle_edges(model, seed);
   std::mt19937 rng(seed + 100);
   std::uniform_real_distribution<double> offset(-0.02, 0.02);
   for (Eigen::Index i = 0; i < state.x.size(); ++i) state.x[i] += offset(rng);
@@ -121,7 +90,7 @@ TEST(SpringCoupling, ImplicitEulerStepsACoupledClothToRestOnAnyThreadCount) {
   State state;
   SpringModel model = test::grid_model(8, 8, 0.05, 0.001, 200.0, 0.05, state);
   // couplings a third of the springs' stiffness, positive and negative, as Delingette's are
-  couple_triangle_edges(model, 5);
+  test::couple_triangle_edges(model, 5);
   model.coupling_stiffness = model.coupling_stiffness.cwiseMax(-60.0).cwiseMin(60.0);
   for (int column = 0; column < 8; ++column) model.pinned[7 * 8 + column] = 1;
   finalize_model(model);

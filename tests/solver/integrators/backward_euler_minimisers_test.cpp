@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "solver/forces/accumulate_forces.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/step.hpp"
 #include "tests/solver/backward_euler_reference.hpp"
@@ -99,6 +100,36 @@ TEST(BackwardEulerMinimisers, SolveTheDampedBackwardEulerEquation) {
       }
     }
     EXPECT_LT(imbalance.lpNorm<Eigen::Infinity>(), 1e-8 * weight_n) << to_string(integrator);
+  }
+}
+
+TEST(BackwardEulerMinimisers, SolveTheBackwardEulerEquationWithCouplings) {
+  // Delingette's couplings (spring_coupling.hpp), which Projective Dynamics cannot take: the
+  // converged step satisfies m (v1 - v0) / h = f(x1) + m g with f the springs' and couplings'
+  // forces of accumulate_forces(), to 1e-8 of the weight
+  for (const Integrator integrator : minimisers) {
+    State state;
+    SpringModel model = test::perturbed_sheet(state, 0.0, 11);
+    test::couple_triangle_edges(model, 4);
+    model.coupling_stiffness *= 0.2;  // within +-60 N/m of the springs' 100: a convex energy
+    finalize_model(model);
+    const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-12);
+    const double h = params.time_step;
+    State stepped = state;
+    ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << to_string(integrator);
+    ForceWorkspace forces;
+    Eigen::VectorXd force;
+    accumulate_forces(model, params.environment, 0.0, stepped.x,
+                      Eigen::VectorXd::Zero(stepped.v.size()), forces, force);
+    double largest_n = 0.0;
+    for (int p = 0; p < model.particle_count(); ++p) {
+      if (model.pinned[p]) continue;
+      const Eigen::Vector3d imbalance =
+          model.mass[p] * (stepped.v - state.v).segment<3>(3 * p) / h - force.segment<3>(3 * p);
+      largest_n = std::max(largest_n, imbalance.norm());
+    }
+    EXPECT_LT(largest_n, 1e-8 * model.mass[6] * params.environment.gravity.norm())
+        << to_string(integrator);
   }
 }
 
