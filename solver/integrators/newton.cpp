@@ -6,6 +6,7 @@
 
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
+#include "solver/integrators/step_minimisation.hpp"
 #include "solver/parallel.hpp"
 
 namespace tissu {
@@ -126,10 +127,7 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
     newton.common.gradient.swap(newton.common.trial_gradient);
     energy_j = trial_energy_j;
   }
-  if (!newton.common.x.allFinite()) return StepStatus::non_finite;
-
-  finish_step_minimisation(model, h, newton.common.x, state);
-  return converged ? StepStatus::ok : StepStatus::not_converged;
+  return finish_step_minimisation(model, h, newton.common.x, converged, state);
 }
 
 }  // namespace tissu

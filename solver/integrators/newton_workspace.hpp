@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "solver/forces/spring_block_matrix.hpp"
-#include "solver/integrators/step_minimisation.hpp"
+#include "solver/integrators/minimisation_workspace.hpp"
 
 namespace tissu {
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/integrators/step_minimisation.hpp"
 #include "solver/parallel.hpp"
 
 namespace tissu {
@@ -115,10 +116,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     qn.common.gradient.swap(qn.common.trial_gradient);
     energy_j = trial_energy_j;
   }
-  if (!qn.common.x.allFinite()) return StepStatus::non_finite;
-
-  finish_step_minimisation(model, h, qn.common.x, state);
-  return converged ? StepStatus::ok : StepStatus::not_converged;
+  return finish_step_minimisation(model, h, qn.common.x, converged, state);
 }
 
 }  // namespace tissu

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "solver/integrators/step_minimisation.hpp"
+#include "solver/integrators/minimisation_workspace.hpp"
 
 namespace tissu {
 

@@ -32,8 +32,9 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   return std::isfinite(energy_j) && workspace.gradient.allFinite();
 }
 
-void finish_step_minimisation(const SpringModel& model, double time_step_s,
-                              const Eigen::VectorXd& x, State& state) {
+StepStatus finish_step_minimisation(const SpringModel& model, double time_step_s,
+                                    const Eigen::VectorXd& x, bool converged, State& state) {
+  if (!x.allFinite()) return StepStatus::non_finite;
   const int particles = model.particle_count();
   const double inverse_h = 1.0 / time_step_s;
 #pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
@@ -43,6 +44,7 @@ void finish_step_minimisation(const SpringModel& model, double time_step_s,
     }
     state.x.segment<3>(3 * p) = x.segment<3>(3 * p);
   }
+  return converged ? StepStatus::ok : StepStatus::not_converged;
 }
 
 }  // namespace tissu
