@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/simulation.hpp"
+#include "bench/recorded_run.hpp"
 #include "solver/step.hpp"
 #include "topology/apply_pins.hpp"
 #include "topology/build_cloth_complex.hpp"
@@ -149,77 +149,43 @@ BENCHMARK_CAPTURE(BM_HangingSheet, newton, Method{Integrator::newton})->Apply(sh
 BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton, Method{Integrator::quasi_newton})
     ->Apply(sheet_sizes);
 
-constexpr int frames_between_shape_samples = 30;
-
-struct DemoRun {
-  double wall_s = 0.0;
-  double simulated_s = 0.0;
-  int unconverged = 0;
-  std::vector<MaterialSurface> shapes;
-};
-
-DemoRun run_demo(const std::string& scenario_file, const std::vector<std::string>& overrides) {
-  std::vector<std::string> quiet = overrides;
-  quiet.insert(quiet.end(), {"render.enabled=false", "output.meshes=false"});
-  const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, quiet);
-  DemoRun run;
-  RunOptions options;
-  options.output_dir = std::filesystem::temp_directory_path() / "tissu_integrator_bench";
-  options.on_frame = [&](const FrameStats& row) { run.unconverged += row.unconverged_steps; };
-  options.on_surface = [&](int frame, const MaterialSurface& surface) {
-    if (frame % frames_between_shape_samples == 0) run.shapes.push_back(surface);
-  };
-  const auto start = std::chrono::steady_clock::now();
-  const RunResult result = run_scenario(scenario, options);
-  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!result.ok) throw std::runtime_error(result.failure);
-  run.simulated_s = scenario.frames / scenario.frame_rate;
-  return run;
-}
-
 /// The demos' settings before issue 16, which the others are compared against.
 const std::vector<std::string> todays_settings = {"simulation.integrator=\"implicit_euler\"",
                                                   "simulation.substeps=10"};
 
-std::map<std::string, DemoRun>& todays_runs() {
-  static std::map<std::string, DemoRun> runs;
+std::map<std::string, bench::RecordedRun>& todays_runs() {
+  static std::map<std::string, bench::RecordedRun> runs;
   return runs;
 }
 
 /// Today's run of each scenario (implicit_euler, its own substeps), from its benchmark if it ran
 /// first, else run here once and kept.
-const DemoRun& todays_run(const std::string& scenario_file) {
-  std::map<std::string, DemoRun>& runs = todays_runs();
+const bench::RecordedRun& todays_run(const std::string& scenario_file) {
+  std::map<std::string, bench::RecordedRun>& runs = todays_runs();
   auto found = runs.find(scenario_file);
   if (found == runs.end()) {
-    found = runs.emplace(scenario_file, run_demo(scenario_file, todays_settings)).first;
+    found = runs.emplace(scenario_file, bench::run_recorded(scenario_file, todays_settings)).first;
   }
   return found->second;
 }
 
-void BM_Demo(benchmark::State& bench, const std::string& scenario_file,
+void BM_Demo(benchmark::State& state, const std::string& scenario_file,
              const std::vector<std::string>& overrides) {
-  DemoRun run;
-  for (auto _ : bench) {
-    run = run_demo(scenario_file, overrides);
-    bench.SetIterationTime(run.wall_s);
+  bench::RecordedRun run;
+  for (auto _ : state) {
+    run = bench::run_recorded(scenario_file, overrides);
+    state.SetIterationTime(run.wall_s);
   }
   if (overrides == todays_settings) todays_runs()[scenario_file] = run;  // the others' reference
-  const DemoRun& today = todays_run(scenario_file);
-  double mean_gap_m = 0.0, max_gap_m = 0.0;
-  for (std::size_t k = 0; k < run.shapes.size(); ++k) {
-    const ShapeDistance d = material_point_distance(run.shapes[k], today.shapes.at(k));
-    mean_gap_m += d.mean_m / run.shapes.size();
-    max_gap_m = std::max(max_gap_m, d.max_m);
-  }
-  Eigen::AlignedBox3d box;
-  for (const Eigen::Vector3d& X : today.shapes.front().rest_m) box.extend(X);
-  const double size_m = box.diagonal().norm();
-  bench.counters["wall_s_per_sim_s"] = run.wall_s / run.simulated_s;
-  bench.counters["today_wall_s_per_sim_s"] = today.wall_s / today.simulated_s;
-  bench.counters["mean_gap_pct"] = 100.0 * mean_gap_m / size_m;
-  bench.counters["max_gap_pct"] = 100.0 * max_gap_m / size_m;
-  bench.counters["unconverged"] = run.unconverged;
+  const bench::RecordedRun& today = todays_run(scenario_file);
+  int unconverged = 0;
+  for (const FrameStats& row : run.frames) unconverged += row.unconverged_steps;
+  const bench::ShapeGap gap = bench::shape_gap(run, today);
+  state.counters["wall_s_per_sim_s"] = run.wall_s / run.simulated_s;
+  state.counters["today_wall_s_per_sim_s"] = today.wall_s / today.simulated_s;
+  state.counters["mean_gap_pct"] = gap.mean_pct;
+  state.counters["max_gap_pct"] = gap.max_pct;
+  state.counters["unconverged"] = unconverged;
 }
 
 #define TISSU_DEMO(scenario, config, ...)                                         \

@@ -1,0 +1,70 @@
+#pragma once
+// A shipped scenario run for a benchmark: its wall time, every frame's statistics and its shape
+// every second, and how far its shapes are from another run's (adaptive_bench, integrator_bench).
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lib/simulation.hpp"
+
+namespace tissu::bench {
+
+inline constexpr int frames_between_shape_samples = 30;  // 1 s at the demos' 30 frames/s
+
+struct RecordedRun {
+  double wall_s = 0.0;
+  double simulated_s = 0.0;
+  std::vector<FrameStats> frames;       ///< frame 0 too
+  std::vector<MaterialSurface> shapes;  ///< every frames_between_shape_samples frames
+};
+
+/// Runs data/scenarios/<scenario_file> with `overrides`, without images or meshes; throws if the
+/// run fails.
+inline RecordedRun run_recorded(const std::string& scenario_file,
+                                const std::vector<std::string>& overrides) {
+  std::vector<std::string> quiet = overrides;
+  quiet.insert(quiet.end(), {"render.enabled=false", "output.meshes=false"});
+  const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, quiet);
+  RecordedRun run;
+  RunOptions options;
+  options.output_dir = std::filesystem::temp_directory_path() / "tissu_bench";
+  options.on_frame = [&](const FrameStats& row) { run.frames.push_back(row); };
+  options.on_surface = [&](int frame, const MaterialSurface& surface) {
+    if (frame % frames_between_shape_samples == 0) run.shapes.push_back(surface);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult result = run_scenario(scenario, options);
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!result.ok) throw std::runtime_error(result.failure);
+  run.simulated_s = scenario.frames / scenario.frame_rate;
+  return run;
+}
+
+/// Over the sampled instants: the mean of the mean distance between the same material points of
+/// `run` and `reference`, and the largest distance seen, as percentages of the cloth's rest
+/// diagonal.
+struct ShapeGap {
+  double mean_pct = 0.0;
+  double max_pct = 0.0;
+};
+
+inline ShapeGap shape_gap(const RecordedRun& run, const RecordedRun& reference) {
+  double mean_m = 0.0, max_m = 0.0;
+  for (std::size_t k = 0; k < run.shapes.size(); ++k) {
+    const ShapeDistance d = material_point_distance(run.shapes[k], reference.shapes.at(k));
+    mean_m += d.mean_m / run.shapes.size();
+    max_m = std::max(max_m, d.max_m);
+  }
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& X : reference.shapes.front().rest_m) box.extend(X);
+  const double size_m = box.diagonal().norm();
+  return {100.0 * mean_m / size_m, 100.0 * max_m / size_m};
+}
+
+}  // namespace tissu::bench
