@@ -25,6 +25,8 @@ void add_run_options(CLI::App& app, RunCommand& command) {
 int execute(const RunCommand& command) {
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
+    for (const std::string& note : scenario.notes)
+      std::fprintf(stderr, "tissu: note: %s\n", note.c_str());
     // the process's thread count is the program's to set, not the library's
     if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
     RunOptions options;

@@ -228,4 +228,8 @@ IndexedMesh read_mesh(const std::filesystem::path& file) {
   return mesh;
 }
 
+IndexedMesh read_polygons(const std::filesystem::path& file) {
+  return import_mesh(file);
+}
+
 }  // namespace tissu

@@ -22,4 +22,9 @@ namespace tissu {
 /// validate_indexed_mesh. Not safe to call concurrently with other uses of assimp's logger.
 IndexedMesh read_mesh(const std::filesystem::path& file);
 
+/// Reads `file` as read_mesh does, but without validate_indexed_mesh: for obstacles, which may be
+/// triangle soups (non-manifold, several parts, polygons of any size). Throws MeshError starting
+/// with the file path when the file cannot be read or the importer fails.
+IndexedMesh read_polygons(const std::filesystem::path& file);
+
 }  // namespace tissu

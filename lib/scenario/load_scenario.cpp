@@ -202,7 +202,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   s.pins = read_pins(top);
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
-  s.solver.obstacles = read_obstacles(top);
+  s.solver.obstacles = read_obstacles(top, s.notes);
   if (top.has("self_collision")) {
     s.solver.self_collision = read_self_collision(top.object("self_collision"));
   }

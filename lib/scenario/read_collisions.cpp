@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <limits>
+#include <numbers>
+#include <string>
 
 #include "lib/mesh_io/read_mesh.hpp"
 #include "topology/mesh_obstacle.hpp"
@@ -30,31 +32,48 @@ ObstacleMotion read_motion(JsonObjectReader motion) {
   return m;
 }
 
+/// A rotation about "axis" (default +z) by exactly one of "angle" (rad) or "degrees".
 Eigen::Matrix3d read_rotation(JsonObjectReader rotation) {
   const Eigen::Vector3d axis = rotation.direction_or("axis", Eigen::Vector3d::UnitZ());
-  const double angle_rad = rotation.number("angle", {});
+  if (rotation.has("angle") == rotation.has("degrees")) {
+    rotation.fail("angle", "exactly one of \"angle\" (rad) and \"degrees\"");
+  }
+  const double angle_rad = rotation.has("angle")
+                               ? rotation.number("angle", {})
+                               : rotation.number("degrees", {}) * std::numbers::pi / 180.0;
   rotation.finish();
   return Eigen::AngleAxisd(angle_rad, axis).toRotationMatrix();
 }
 
-/// A mesh file (relative to the scenario's folder), scaled about its origin then moved by
-/// "position", as a distance field.
-std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o) {
+/// A mesh file (relative to the scenario's folder), scaled about its origin, rotated about it,
+/// then moved by "position", as a distance field. Faces the surface dropped are noted.
+std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
+                                                      std::vector<std::string>& notes) {
   const std::filesystem::path given = o.string("file");
   const std::filesystem::path file =
       given.is_absolute() ? given : std::filesystem::path(o.file()).parent_path() / given;
   const double scale = o.number_or("scale", 1.0, positive(""));
+  const Eigen::Matrix3d rotation =
+      o.has("rotation") ? read_rotation(o.object("rotation")) : Eigen::Matrix3d::Identity();
   const Eigen::Vector3d position = o.vector3_or("position", Eigen::Vector3d::Zero());
   try {
-    IndexedMesh mesh = read_mesh(file);
-    for (Eigen::Vector3d& x : mesh.vertices) x = scale * x + position;
-    return make_mesh_surface(mesh);
+    IndexedMesh mesh = read_polygons(file);
+    for (Eigen::Vector3d& x : mesh.vertices) x = rotation * (scale * x) + position;
+    ObstacleMeshReport report;
+    auto surface = make_mesh_surface(mesh, &report);
+    if (report.duplicate_faces > 0 || report.degenerate_faces > 0) {
+      notes.push_back(o.file() + ": " + o.key_path("file") + ": " + file.string() + ": dropped " +
+                      std::to_string(report.duplicate_faces) + " duplicate and " +
+                      std::to_string(report.degenerate_faces) + " degenerate faces, kept " +
+                      std::to_string(report.triangles) + " triangles");
+    }
+    return surface;
   } catch (const MeshError& e) {
     throw ScenarioError(o.file() + ": " + o.key_path("file") + ": " + e.what());
   }
 }
 
-Obstacle read_obstacle(JsonObjectReader o) {
+Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
   Obstacle ob;
   const std::string type = o.choice("type", {"plane", "sphere", "capsule", "box", "mesh"});
   if (type == "plane") {
@@ -72,7 +91,7 @@ Obstacle read_obstacle(JsonObjectReader o) {
     ob.radius_m = o.number("radius", positive(" (m)"));
   } else if (type == "mesh") {
     ob.shape = ObstacleShape::mesh;
-    ob.surface = read_mesh_surface(o);
+    ob.surface = read_mesh_surface(o, notes);
   } else {
     ob.shape = ObstacleShape::box;
     ob.position = o.vector3("center");
@@ -91,11 +110,11 @@ Obstacle read_obstacle(JsonObjectReader o) {
 
 }  // namespace
 
-std::vector<Obstacle> read_obstacles(JsonObjectReader& top) {
+std::vector<Obstacle> read_obstacles(JsonObjectReader& top, std::vector<std::string>& notes) {
   std::vector<Obstacle> obstacles;
   if (!top.has("obstacles")) return obstacles;
   for (const auto& [element, path] : top.array("obstacles")) {
-    obstacles.push_back(read_obstacle(object_reader(*element, top.file(), path)));
+    obstacles.push_back(read_obstacle(object_reader(*element, top.file(), path), notes));
   }
   return obstacles;
 }

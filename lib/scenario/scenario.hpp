@@ -75,6 +75,9 @@ struct Scenario {
   TearingSettings tearing;
   OutputOptions output;
   RenderSettings render;
+  /// Remarks from loading that are not errors (e.g. an obstacle mesh's dropped duplicate faces),
+  /// one line each, naming the file and key; the apps print them before running.
+  std::vector<std::string> notes;
 
   /// Whether the run bisects triangles (adaptive refinement, or refinement around crack tips):
   /// quads are then cut into triangles before it starts.

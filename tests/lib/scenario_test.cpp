@@ -394,6 +394,35 @@ TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
               HasSubstr("dir/s.json: obstacles[0].file: dir/no_such.obj"));
 }
 
+TEST(Scenario, ReadsAMeshObstacleSoupRotatedFromYUp) {
+  // a thin pyramid pointing up +y, as a y-up tool writes it, with its faces all listed twice:
+  // every edge is shared by four faces, which a cloth would refuse
+  IndexedMesh soup;
+  soup.vertices = {{-0.1, 0, -0.1}, {0.1, 0, -0.1}, {0.1, 0, 0.1}, {-0.1, 0, 0.1}, {0, 1, 0}};
+  soup.faces = {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}, {1, 4, 2}, {2, 4, 3}, {3, 4, 0}};
+  const std::vector<std::vector<int>> once = soup.faces;
+  soup.faces.insert(soup.faces.end(), once.begin(), once.end());
+  const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle_soup") / "spike.obj";
+  write_mesh(file, soup, MeshFormat::obj);
+  const Scenario s = parse_scenario(
+      minimal, "dir/s.json",
+      {R"(obstacles=[{ "type": "mesh", "file": ")" + file.string() +
+       R"(", "scale": 2, "rotation": { "axis": [1, 0, 0], "degrees": 90 }, "position": [0, 0, 1] }])"});
+  ASSERT_EQ(s.solver.obstacles.size(), 1u);
+  // scaled about the origin, +y turned to +z, then lifted: the apex is at (0, 0, 3)
+  EXPECT_NEAR(surface_distance(s.solver.obstacles[0], {0, 0, 3.5}, 0.0).distance_m, 0.5, 1e-12);
+  EXPECT_LT(surface_distance(s.solver.obstacles[0], {0, 0, 2.5}, 0.0).distance_m, 0.0);
+  ASSERT_EQ(s.notes.size(), 1u);
+  EXPECT_THAT(s.notes[0], HasSubstr("dir/s.json: obstacles[0].file: "));
+  EXPECT_THAT(s.notes[0],
+              HasSubstr("dropped 6 duplicate and 0 degenerate faces, kept 6 triangles"));
+
+  EXPECT_THAT(with("obstacles", R"([{ "type": "mesh", "file": ")" + file.string() +
+                                    R"(", "rotation": { "angle": 1, "degrees": 90 } }])"),
+              HasSubstr("obstacles[0].rotation.angle: expected exactly one of \"angle\" (rad) "
+                        "and \"degrees\""));
+}
+
 TEST(Scenario, BadObstaclesAreNamed) {
   EXPECT_THAT(with("obstacles", R"([{ "type": "cone" }])"),
               HasSubstr("dir/s.json: obstacles[0].type: expected one of"));

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
+
+#include "solver/collision/primitive_distance.hpp"
 #include "solver/step.hpp"
 #include "tests/solver/test_models.hpp"
 #include "tests/test_meshes.hpp"
@@ -16,6 +21,107 @@ IndexedMesh cube(bool closed = true) {
   IndexedMesh m = test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);
   if (!closed) m.faces = {m.faces[10], m.faces[11]};
   return m;
+}
+
+/// The nearest distance from x to any triangle of `mesh` (m), by brute force.
+double unsigned_distance_m(const IndexedMesh& mesh, const Eigen::Vector3d& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const std::vector<int>& f : mesh.faces) {
+    for (std::size_t k = 1; k + 1 < f.size(); ++k) {
+      const Eigen::Vector3d& a = mesh.vertices[f[0]];
+      const Eigen::Vector3d& b = mesh.vertices[f[k]];
+      const Eigen::Vector3d& c = mesh.vertices[f[k + 1]];
+      const Eigen::Vector3d w = nearest_on_triangle(x, a, b, c);
+      best = std::min(best, (x - (w[0] * a + w[1] * b + w[2] * c)).norm());
+    }
+  }
+  return best;
+}
+
+/// A thin square pyramid, closed, facing outwards: base [-0.1, 0.1]^2 at z = 0, apex (0, 0, 1).
+IndexedMesh pyramid() {
+  IndexedMesh m;
+  m.vertices = {{-0.1, -0.1, 0}, {0.1, -0.1, 0}, {0.1, 0.1, 0}, {-0.1, 0.1, 0}, {0, 0, 1}};
+  m.faces = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  return m;
+}
+
+/// Whether x is inside the pyramid: below each of its face planes.
+bool inside_pyramid(const Eigen::Vector3d& x) {
+  const IndexedMesh m = pyramid();
+  for (const std::vector<int>& f : m.faces) {
+    const Eigen::Vector3d& a = m.vertices[f[0]];
+    const Eigen::Vector3d n = (m.vertices[f[1]] - a).cross(m.vertices[f[2]] - a);
+    if (n.dot(x - a) >= 0.0) return false;
+  }
+  return true;
+}
+
+/// A closed prism of length 1 along y over the concave pentagon (0, 0) (2, 0) (2, 2) (1, 1)
+/// (0, 2) in x, z: a block with a V notch cut into its top. The pentagon is star-shaped from its
+/// first corner, so fans from it triangulate the ends; one of their triangles, (0, 0) (2, 2)
+/// (1, 1), has no area, and the surface must stay closed without it.
+const std::vector<Eigen::Vector2d> notch_outline = {{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}};
+IndexedMesh notched_block() {
+  IndexedMesh m;
+  const int n = static_cast<int>(notch_outline.size());
+  for (double y : {0.0, 1.0}) {
+    for (const Eigen::Vector2d& p : notch_outline) m.vertices.emplace_back(p.x(), y, p.y());
+  }
+  // the outline runs counter-clockwise seen from -y: the y = 0 end faces -y as listed
+  std::vector<int> near_end, far_end{n};  // both fans start at the corner (0, 0)
+  for (int i = 0; i < n; ++i) near_end.push_back(i);
+  for (int i = n - 1; i > 0; --i) far_end.push_back(n + i);
+  m.faces = {near_end, far_end};
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    m.faces.push_back({i, n + i, n + j, j});
+  }
+  return m;
+}
+
+/// Whether x is inside the notched block (crossing number in x, z).
+bool inside_notched_block(const Eigen::Vector3d& x) {
+  if (x.y() <= 0.0 || x.y() >= 1.0) return false;
+  bool inside = false;
+  const int n = static_cast<int>(notch_outline.size());
+  for (int i = 0, j = n - 1; i < n; j = i++) {
+    const Eigen::Vector2d& a = notch_outline[i];
+    const Eigen::Vector2d& b = notch_outline[j];
+    if ((a.y() > x.z()) != (b.y() > x.z()) &&
+        x.x() < (b.x() - a.x()) * (x.z() - a.y()) / (b.y() - a.y()) + a.x()) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+/// Signed distances and normals of `mesh`'s surface at every point of a lattice over `box`
+/// match the brute-force distance with the analytic side.
+template <class Inside>
+void expect_signed_distances(const IndexedMesh& mesh, const Eigen::AlignedBox3d& box,
+                             Inside inside) {
+  const auto surface = make_mesh_surface(mesh);
+  constexpr int n = 13;
+  int checked = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
+        const Eigen::Vector3d t(i / (n - 1.0), j / (n - 1.0), k / (n - 1.0));
+        const Eigen::Vector3d x = box.min() + t.cwiseProduct(box.sizes());
+        const double gap_m = unsigned_distance_m(mesh, x);
+        if (gap_m < 1e-9) continue;  // on the surface: either side is right
+        const double expected = inside(x) ? -gap_m : gap_m;
+        const SurfaceDistance d = surface->distance(x);
+        ASSERT_NEAR(d.distance_m, expected, 1e-12) << "at " << x.transpose();
+        // the normal leads from x to the surface inside, from the surface to x outside
+        const Eigen::Vector3d nearest = x - d.distance_m * d.normal;
+        ASSERT_NEAR(unsigned_distance_m(mesh, nearest), 0.0, 1e-12) << "at " << x.transpose();
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, n * n * n / 2);
 }
 
 void expect_surface(const SurfaceQuery& s, const Eigen::Vector3d& x, double distance_m,
@@ -38,6 +144,123 @@ TEST(MeshSurface, AnOpenMeshIsATwoSidedShell) {
   const auto s = make_mesh_surface(cube(/*closed=*/false));
   expect_surface(*s, {0.0, 0.5, 1.3}, 0.3, Eigen::Vector3d::UnitZ());
   expect_surface(*s, {0.0, 0.5, 0.6}, 0.4, -Eigen::Vector3d::UnitZ());  // below it: still outside
+}
+
+TEST(MeshSurface, SignsDistancesRightAroundAPyramidApexAndEdges) {
+  expect_signed_distances(pyramid(),
+                          {Eigen::Vector3d(-0.3, -0.3, -0.2), Eigen::Vector3d(0.3, 0.3, 1.3)},
+                          inside_pyramid);
+  // just above the apex and off its axis: the nearest feature is the apex vertex
+  const auto s = make_mesh_surface(pyramid());
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.0, 0.0, 1.2), Eigen::Vector3d(0.05, 0.0, 1.2),
+                                   Eigen::Vector3d(-0.03, 0.04, 1.01)}) {
+    EXPECT_GT(s->distance(x).distance_m, 0.0) << x.transpose();
+  }
+}
+
+TEST(MeshSurface, SignsDistancesRightAroundCubeCornersAndEdges) {
+  expect_signed_distances(cube(), {Eigen::Vector3d(0.4, 0.4, 0.4), Eigen::Vector3d(1.6, 1.6, 1.6)},
+                          [](const Eigen::Vector3d& x) { return x.cwiseAbs().maxCoeff() < 1.0; });
+  expect_signed_distances(cube(),
+                          {Eigen::Vector3d(-1.5, -0.2, 0.5), Eigen::Vector3d(-0.5, 0.2, 1.5)},
+                          [](const Eigen::Vector3d& x) { return x.cwiseAbs().maxCoeff() < 1.0; });
+}
+
+TEST(MeshSurface, SignsDistancesRightAroundAConcaveNotch) {
+  ObstacleMeshReport report;
+  make_mesh_surface(notched_block(), &report);
+  EXPECT_TRUE(report.closed);
+  EXPECT_EQ(report.degenerate_faces, 2);  // the flat fan triangle at each end
+  expect_signed_distances(notched_block(),
+                          {Eigen::Vector3d(0.3, -0.3, 0.3), Eigen::Vector3d(1.7, 1.3, 2.3)},
+                          inside_notched_block);
+}
+
+TEST(MeshSurface, AcceptsASoupOfPartsThatTouchAndOverlap) {
+  // three cubes: two overlapping, and one touching the first along an edge only, which four
+  // faces then share (a non-manifold edge); the first cube's faces are all listed twice
+  IndexedMesh soup = cube();
+  const auto append = [&soup](const IndexedMesh& part) {
+    const int offset = static_cast<int>(soup.vertices.size());
+    soup.vertices.insert(soup.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (std::vector<int> f : part.faces) {
+      for (int& v : f) v += offset;
+      soup.faces.push_back(f);
+    }
+  };
+  append(test::cube_mesh({1.0, 0.0, 0.0}, 1.0));
+  const IndexedMesh corner_neighbour = test::cube_mesh({2.0, 2.0, 0.0}, 1.0);
+  // weld the shared edge x = y = 1 onto the first cube's corners 3 (z = -1) and 7 (z = +1)
+  const int offset = static_cast<int>(soup.vertices.size());
+  append(corner_neighbour);
+  for (std::vector<int>& f : soup.faces) {
+    for (int& v : f) {
+      if (v == offset + 0) v = 3;
+      if (v == offset + 4) v = 7;
+    }
+  }
+  const std::vector<std::vector<int>> first_cube(soup.faces.begin(), soup.faces.begin() + 12);
+  soup.faces.insert(soup.faces.end(), first_cube.begin(), first_cube.end());
+  soup.faces.push_back({2, 3, 3});  // and one degenerate face
+
+  ObstacleMeshReport report;
+  const auto s = make_mesh_surface(soup, &report);
+  EXPECT_TRUE(report.closed);
+  EXPECT_EQ(report.duplicate_faces, 12);
+  EXPECT_EQ(report.degenerate_faces, 1);
+  EXPECT_EQ(report.triangles, 36);
+  // inside both overlapping cubes: the depth is to the nearest face, here the first cube's
+  // x = 1 face, which lies inside the second
+  EXPECT_NEAR(s->distance({0.5, 0.0, 0.0}).distance_m, -0.5, 1e-12);
+  EXPECT_NEAR(s->distance({1.8, 1.9, 0.0}).distance_m, -0.8, 1e-12);  // inside the third
+  EXPECT_NEAR(s->distance({0.5, 1.5, 0.0}).distance_m, 0.5, 1e-12);   // in the notch between
+  EXPECT_NEAR(s->distance({-1.5, 0.0, 0.0}).distance_m, 0.5, 1e-12);  // outside
+}
+
+TEST(MeshSurface, RefusesWhatCannotBeQueried) {
+  IndexedMesh nan = cube();
+  nan.vertices[5].y() = std::nan("");
+  EXPECT_THROW(
+      {
+        try {
+          make_mesh_surface(nan);
+        } catch (const MeshError& e) {
+          EXPECT_STREQ(e.what(), "vertex 5 has a non-finite coordinate");
+          throw;
+        }
+      },
+      MeshError);
+  EXPECT_THROW(make_mesh_surface(IndexedMesh{cube().vertices, {}}), MeshError);
+  IndexedMesh flat = cube();
+  flat.faces = {{0, 1, 1}, {0, 0, 0}};
+  EXPECT_THROW(make_mesh_surface(flat), MeshError);
+  IndexedMesh segment = cube();
+  segment.faces.push_back({0, 1});
+  EXPECT_THROW(make_mesh_surface(segment), MeshError);
+}
+
+TEST(MeshSurface, ClothAboveAnApexFallsFreelyUntilItTouches) {
+  // a 0.6 m sheet 0.3 m above the pyramid's apex: in the first 0.1 s it falls 5 cm, touching
+  // nothing, so it must move exactly as it does without the obstacle
+  const auto sheet = [](State& state) {
+    SpringModel model = test::grid_model(13, 13, 0.05, 1e-3, 100.0, 0.0, state);
+    for (int p = 0; p < model.particle_count(); ++p) {
+      state.x.segment<3>(3 * p) += Eigen::Vector3d(-0.3, -0.3, 1.3);
+    }
+    return model;
+  };
+  SolverParams params;
+  params.time_step = 1.0 / 30.0;
+  Obstacle apex;
+  apex.shape = ObstacleShape::mesh;
+  apex.surface = make_mesh_surface(pyramid());
+  State free_state, state;
+  const SpringModel free_model = sheet(free_state), model = sheet(state);
+  for (int n = 0; n < 3; ++n) ASSERT_EQ(step(free_model, params, free_state), StepStatus::ok);
+  params.obstacles = {apex};
+  for (int n = 0; n < 3; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_LT((state.x - free_state.x).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((state.v - free_state.v).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(MeshSurface, RefusesAnInvalidMesh) {
