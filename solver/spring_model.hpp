@@ -53,6 +53,10 @@ struct SpringModel {
   ParticleSpringIncidence incidence;  ///< filled by finalize_model()
   Eigen::MatrixX2i surface_edges;     ///< #E x 2 edges of the triangles, (i < j), each once,
                                       ///< sorted; filled by finalize_model(), for collisions
+  /// 3#P material (rest) coordinates of the particles (m), xyz interleaved, as compiled from the
+  /// complex; for self-collision, which ignores pairs that are neighbours in the material (the
+  /// two lips of a cut share their material points). Empty when unknown (hand-built models).
+  Eigen::VectorXd rest_x;
   /// What this model is, for the caches derived from it (geometry-central's modificationTick):
   /// a process-wide generation counter that finalize_model() advances and nothing else sets, so
   /// two finalizations never share a value and 0 means "never finalized". Every cache a workspace

@@ -115,10 +115,10 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     const double end_time_s = state.time + params.time_step;
     workspace.obstacle_contacts =
         resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
-                                  workspace.step_start_x, state, workspace.touching_obstacle);
+                                  workspace.step_start_x, state, workspace.obstacle_holding_normal);
     workspace.self_collision = resolve_self_collisions(
         model, params.self_collision, params.time_step, workspace.step_start_x,
-        workspace.touching_obstacle, workspace.self_collision_pairs, state);
+        workspace.obstacle_holding_normal, workspace.self_collision_pairs, state);
   }
   state.time += params.time_step;
   if (!finite || !state.x.allFinite() || !state.v.allFinite()) return StepStatus::non_finite;

@@ -100,6 +100,7 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
   const auto particle_count = static_cast<Eigen::Index>(lcc.vertex_attributes().size());
   model.mass.resize(particle_count);
   model.pinned.assign(particle_count, 0);
+  model.rest_x.resize(3 * particle_count);
   out.state.x.resize(3 * particle_count);
   out.state.v.resize(3 * particle_count);
   out.state.time = time_s;
@@ -112,6 +113,7 @@ CompiledCloth compile(ClothComplex& lcc, double time_s) {
     out.particle_vertices.push_back(v);
     model.mass[index] = p.mass;
     model.pinned[index] = p.pinned ? 1 : 0;
+    model.rest_x.segment<3>(3 * index) = to_eigen(p.rest_position);
     out.state.x.segment<3>(3 * index) = to_eigen(v->point());
     out.state.v.segment<3>(3 * index) = to_eigen(p.velocity);
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "solver/collision/primitive_distance.hpp"
 #include "solver/parallel.hpp"
 
 namespace tissu {
@@ -140,11 +141,32 @@ double mean_edge_length_m(const SpringModel& model, const Eigen::VectorXd& x) {
   return model.surface_edges.rows() > 0 ? sum_m / model.surface_edges.rows() : 0.0;
 }
 
+/// Whether the pair's primitives lie closer than `gap_m` in material coordinates `rest_x`.
+bool material_neighbours(const CandidatePair& pair, const Eigen::VectorXd& rest_x, double gap_m) {
+  std::array<Eigen::Vector3d, 4> r;
+  for (int k = 0; k < 4; ++k) r[k] = rest_x.segment<3>(3 * pair.particle[k]);
+  Eigen::Vector3d between;
+  if (pair.edge_edge) {
+    const Eigen::Vector2d st = nearest_between_segments(r[0], r[1], r[2], r[3]);
+    between = (r[0] + st[0] * (r[1] - r[0])) - (r[2] + st[1] * (r[3] - r[2]));
+  } else {
+    const Eigen::Vector3d w = nearest_on_triangle(r[0], r[1], r[2], r[3]);
+    between = r[0] - (w[0] * r[1] + w[1] * r[2] + w[2] * r[3]);
+  }
+  return between.squaredNorm() < gap_m * gap_m;
+}
+
 }  // namespace
 
 std::vector<CandidatePair> collision_candidates(const SpringModel& model,
                                                 const Eigen::VectorXd& start_x,
-                                                const Eigen::VectorXd& end_x, double margin_m) {
+                                                const Eigen::VectorXd& end_x, double margin_m,
+                                                double material_gap_m) {
+  const bool has_rest = model.rest_x.size() == 3 * model.particle_count() && material_gap_m > 0.0;
+  const auto keep = [&](const CandidatePair& pair) {
+    return !all_pinned(model, pair.particle) &&
+           !(has_rest && material_neighbours(pair, model.rest_x, material_gap_m));
+  };
   const int particles = model.particle_count();
   const int triangles = static_cast<int>(model.triangles.rows());
   const int edges = static_cast<int>(model.surface_edges.rows());
@@ -176,8 +198,8 @@ std::vector<CandidatePair> collision_candidates(const SpringModel& model,
     for_each_overlapping(vertex_box[p], triangle_box, grid, triangle_table, [&](int t) {
       const std::array<int, 4> ids{p, model.triangles(t, 0), model.triangles(t, 1),
                                    model.triangles(t, 2)};
-      if (ids[1] == p || ids[2] == p || ids[3] == p || all_pinned(model, ids)) return;
-      out.push_back({ids, false});
+      if (ids[1] == p || ids[2] == p || ids[3] == p) return;
+      if (const CandidatePair pair{ids, false}; keep(pair)) out.push_back(pair);
     });
   });
 
@@ -189,8 +211,8 @@ std::vector<CandidatePair> collision_candidates(const SpringModel& model,
         [&](int f) {
           const int c = model.surface_edges(f, 0), d = model.surface_edges(f, 1);
           const std::array<int, 4> ids{a, b, c, d};
-          if (a == c || a == d || b == c || b == d || all_pinned(model, ids)) return;
-          out.push_back({ids, true});
+          if (a == c || a == d || b == c || b == d) return;
+          if (const CandidatePair pair{ids, true}; keep(pair)) out.push_back(pair);
         },
         /*first=*/e);
   });

@@ -35,9 +35,11 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   return from + travelled * (to - from);  // still creeping along the surface: call it a contact
 }
 
-/// One obstacle against one particle that moved from `from` during the step; true if they touched.
-bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vector3d& from,
-             Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v) {
+/// One obstacle against one particle that moved from `from` during the step: the outward normal
+/// where they touched, or nothing.
+std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, double h, double time_s,
+                                       const Eigen::Vector3d& from, Eigen::Ref<Eigen::Vector3d> x,
+                                       Eigen::Ref<Eigen::Vector3d> v) {
   SurfaceDistance surface = surface_distance(obstacle, x, time_s);
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
   // ending near the far side of a part thinner than the step means it went through
@@ -52,7 +54,7 @@ bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vec
       x = *contact;  // where the path first came within the thickness, on its own side
       surface = surface_distance(obstacle, x, time_s);
     } else if (!ends_near) {
-      return false;
+      return std::nullopt;
     } else {
       // it started touching: measure it on the side it started from
       surface = {at_start.distance_m + (x - from).dot(at_start.normal), at_start.normal};
@@ -64,7 +66,7 @@ bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vec
   const Eigen::Vector3d v_obstacle = obstacle.motion.velocity_at(time_s);
   const Eigen::Vector3d relative = v - v_obstacle;
   const double v_n = relative.dot(n);
-  if (v_n >= 0.0) return true;  // already leaving
+  if (v_n >= 0.0) return n;  // already leaving
   const double dv_n = -v_n;
   const Eigen::Vector3d v_t = relative - v_n * n;
   const double speed_t = v_t.norm();
@@ -74,25 +76,25 @@ bool resolve(const Obstacle& obstacle, double h, double time_s, const Eigen::Vec
           : Eigen::Vector3d(std::max(0.0, 1.0 - obstacle.kinetic_friction * dv_n / speed_t) * v_t);
   v = v_obstacle + v_t_after;
   x += h * (v_t_after - v_t);
-  return true;
+  return n;
 }
 
 }  // namespace
 
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state, std::vector<std::uint8_t>& touching) {
+                              State& state, Eigen::Matrix3Xd& holding_normal) {
   const int particles = model.particle_count();
-  touching.assign(particles, 0);
+  holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
     for (const Obstacle& obstacle : obstacles) {
-      if (resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
-                  state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
-        touching[p] = 1;
+      if (const auto normal = resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
+                                      state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
+        holding_normal.col(p) = *normal;
         ++contacts;
       }
     }

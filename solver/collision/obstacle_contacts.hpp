@@ -2,7 +2,6 @@
 /// \file
 /// Keeps the cloth outside the obstacles after each step, with Coulomb friction. CGAL-free.
 
-#include <cstdint>
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
@@ -26,10 +25,11 @@ namespace tissu {
 /// `start_x` crossed it (a thin obstacle or a fast particle) is stopped where the path first
 /// touches it, or, if it started touching, kept on the side it started from: no tunnelling.
 /// Obstacles are resolved one after the other, at their position at `time_s` (the end of the step).
-/// Pinned particles are left alone. Sets touching[p] to 1 for each particle in contact (#P,
-/// resized) and returns the number of contacts.
+/// Pinned particles are left alone. Sets column p of `holding_normal` (3 x #P, resized) to the
+/// outward unit normal of the obstacle that held particle p (the last one, if several did), zero
+/// where none did, and returns the number of contacts.
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state, std::vector<std::uint8_t>& touching);
+                              State& state, Eigen::Matrix3Xd& holding_normal);
 
 }  // namespace tissu

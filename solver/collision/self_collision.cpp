@@ -64,11 +64,37 @@ struct Corrections {
   }
 };
 
+/// 1/m of the pair's four particles (1/kg), 0 for those that cannot move.
+using PairInverseMasses = Eigen::Vector4d;
+
+PairInverseMasses of_pair(const Eigen::VectorXd& inverse_mass, const ContactPair& c) {
+  return {inverse_mass[c.particle[0]], inverse_mass[c.particle[1]], inverse_mass[c.particle[2]],
+          inverse_mass[c.particle[3]]};
+}
+
+/// Who may move when a pair's relative position r = sum_k w_k x_k is corrected along `direction`:
+/// particle k would move along w_k direction. A pinned particle never moves. A particle an
+/// obstacle holds moves only away from that obstacle (w_k direction . n > 0), never into it: a
+/// layer falling through another onto the floor in one step is held by the floor too, and must
+/// still be lifted back above the layer it crossed.
+struct Mobility {
+  const Eigen::VectorXd& inverse_mass;     ///< #P, 0 for pinned particles (1/kg)
+  const Eigen::Matrix3Xd& holding_normal;  ///< 3 x #P, 0 where no obstacle holds (or empty)
+
+  PairInverseMasses along(const ContactPair& c, const Eigen::Vector3d& direction) const {
+    PairInverseMasses result = of_pair(inverse_mass, c);
+    if (holding_normal.cols() == 0) return result;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d n = holding_normal.col(c.particle[k]);
+      if (!n.isZero() && !(c.weight[k] * direction.dot(n) > 0.0)) result[k] = 0.0;
+    }
+    return result;
+  }
+};
+
 /// sum_k w_k^2 / m_k: the inverse of the pair's effective mass along its normal (1/kg).
-double inverse_effective_mass(const Eigen::VectorXd& inverse_mass, const ContactPair& c) {
-  double sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += c.weight[k] * c.weight[k] * inverse_mass[c.particle[k]];
-  return sum;
+double inverse_effective_mass(const PairInverseMasses& inverse_mass, const ContactPair& c) {
+  return c.weight.cwiseAbs2().dot(inverse_mass);
 }
 
 /// Adds, to particle k of the pair, w_k / m_k times `impulse`: a mass-weighted share of a change
@@ -76,11 +102,14 @@ double inverse_effective_mass(const Eigen::VectorXd& inverse_mass, const Contact
 /// which conserves momentum since sum_k w_k = 0. No particle's share exceeds |wanted|: when the
 /// heavy end of a pair cannot move (pinned, or held by an obstacle), the formula would throw a
 /// light end by |wanted| / w_k, unboundedly far for a small weight; impact zones handle the rest.
-void share(const Eigen::VectorXd& inverse_mass, const ContactPair& c, const Eigen::Vector3d& wanted,
-           double pair_inverse_mass, Eigen::VectorXd& out) {
+/// Nothing is shared when no particle of the pair can move.
+void share(const PairInverseMasses& inverse_mass, const ContactPair& c,
+           const Eigen::Vector3d& wanted, Eigen::VectorXd& out) {
+  const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
+  if (!(pair_inverse_mass > 0.0)) return;
   const double limit = wanted.norm();
   for (int k = 0; k < 4; ++k) {
-    Eigen::Vector3d d = c.weight[k] * inverse_mass[c.particle[k]] / pair_inverse_mass * wanted;
+    Eigen::Vector3d d = c.weight[k] * inverse_mass[k] / pair_inverse_mass * wanted;
     const double size = d.norm();
     if (size > limit) d *= limit / size;
     out.segment<3>(3 * c.particle[k]) += d;
@@ -97,25 +126,28 @@ void count_pair(const ContactPair& c, Corrections& out) {
   for (int k = 0; k < 4; ++k) ++out.pairs[c.particle[k]];
 }
 
-/// Step 1: push close pairs out to the thickness, stop their approach, apply friction.
-void repel(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& close,
-           const SelfCollisionOptions& o, double h, State& state) {
-  const int particles = static_cast<int>(inverse_mass.size());
+/// Step 1: push close pairs out to the thickness, stop their approach, apply friction. Friction
+/// moves no particle an obstacle holds (`held_inverse_mass` is 0 there): the obstacle's friction
+/// has set its tangential velocity.
+void repel(const Mobility& mobility, const Eigen::VectorXd& held_inverse_mass,
+           const std::vector<ContactPair>& close, const SelfCollisionOptions& o, double h,
+           State& state) {
+  const int particles = static_cast<int>(held_inverse_mass.size());
   Corrections push(particles), friction(particles);
   for (const ContactPair& c : close) {
-    const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
-    if (!(pair_inverse_mass > 0.0)) continue;
     const Eigen::Vector3d& n = c.normal;
-    share(inverse_mass, c, (o.thickness_m - c.distance_m) * n, pair_inverse_mass, push.position);
+    const PairInverseMasses apart = mobility.along(c, n);  // both corrections push along +n
+    if (!(inverse_effective_mass(apart, c) > 0.0)) continue;
+    share(apart, c, (o.thickness_m - c.distance_m) * n, push.position);
     const Eigen::Vector3d v_rel = relative(c, state.v);
     const double v_n = v_rel.dot(n);
     if (v_n < 0.0) {
-      share(inverse_mass, c, -v_n * n, pair_inverse_mass, push.velocity);
+      share(apart, c, -v_n * n, push.velocity);
       const Eigen::Vector3d v_t = v_rel - v_n * n;
       const double speed_t = v_t.norm();
       if (speed_t > 0.0) {
         const double slowed = std::min(o.friction * -v_n / speed_t, 1.0);
-        share(inverse_mass, c, -slowed * v_t, pair_inverse_mass, friction.velocity);
+        share(of_pair(held_inverse_mass, c), c, -slowed * v_t, friction.velocity);
       }
     }
     count_pair(c, push);
@@ -126,15 +158,15 @@ void repel(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& 
 }
 
 /// Step 2: cancel the approaching relative displacement of each crossing pair along its normal.
-void stop_crossings(const Eigen::VectorXd& inverse_mass, const std::vector<ContactPair>& impacts,
+void stop_crossings(const Mobility& mobility, const std::vector<ContactPair>& impacts,
                     const Eigen::VectorXd& start_x, double h, State& state) {
-  Corrections stop(static_cast<int>(inverse_mass.size()));
+  Corrections stop(static_cast<int>(mobility.inverse_mass.size()));
   const Eigen::VectorXd displacement = state.x - start_x;
   for (const ContactPair& c : impacts) {
-    const double pair_inverse_mass = inverse_effective_mass(inverse_mass, c);
+    const PairInverseMasses apart = mobility.along(c, c.normal);
     const double approach_m = relative(c, displacement).dot(c.normal);
-    if (!(pair_inverse_mass > 0.0) || approach_m >= 0.0) continue;
-    share(inverse_mass, c, -approach_m * c.normal, pair_inverse_mass, stop.position);
+    if (!(inverse_effective_mass(apart, c) > 0.0) || approach_m >= 0.0) continue;
+    share(apart, c, -approach_m * c.normal, stop.position);
     count_pair(c, stop);
   }
   stop.velocity = stop.position / h;
@@ -211,24 +243,26 @@ const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
   cache.built_for_model = model.identity;
   if (farthest_move_m(end_x, start_x) <= half_skin_m) {
     cache.built_at_x = end_x;
-    cache.pairs = collision_candidates(model, end_x, end_x, o.thickness_m + o.skin_m);
+    cache.pairs =
+        collision_candidates(model, end_x, end_x, o.thickness_m + o.skin_m, o.thickness_m);
   } else {
     cache.built_at_x.resize(0);
-    cache.pairs = collision_candidates(model, start_x, end_x, o.thickness_m);
+    cache.pairs = collision_candidates(model, start_x, end_x, o.thickness_m, o.thickness_m);
   }
   return cache.pairs;
 }
 
 SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions& options,
                             double time_step_s, const Eigen::VectorXd& start_x,
-                            const std::vector<std::uint8_t>& held, SelfCollisionCache& cache,
+                            const Eigen::Matrix3Xd& holding_normal, SelfCollisionCache& cache,
                             State& state) {
   SelfCollisionReport report;
   const double h = time_step_s;
   const double touching_m = 1e-3 * options.thickness_m;  // closest points this near have met
-  Eigen::VectorXd inverse_mass = model.inverse_mass;
-  for (std::size_t p = 0; p < held.size(); ++p) {
-    if (held[p]) inverse_mass[p] = 0.0;
+  const Mobility mobility{model.inverse_mass, holding_normal};
+  Eigen::VectorXd inverse_mass = model.inverse_mass;  // 0 where held, for friction and zones
+  for (Eigen::Index p = 0; p < holding_normal.cols(); ++p) {
+    if (!holding_normal.col(p).isZero()) inverse_mass[p] = 0.0;
   }
 
   const std::vector<CandidatePair>& near =
@@ -239,7 +273,7 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
         return proximity_at_end(p, m, options.thickness_m);
       });
   report.proximities = static_cast<int>(close.size());
-  repel(inverse_mass, close, options, h, state);
+  repel(mobility, inverse_mass, close, options, h, state);
 
   // the impulse passes look for crossings among the pairs found above: their corrections move
   // particles by less than the thickness the boxes were grown by, or undo part of their step
@@ -253,12 +287,13 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
     const std::vector<ContactPair> impacts = crossings_among(near);
     if (impacts.empty()) return report;
     report.impacts += static_cast<int>(impacts.size());
-    stop_crossings(inverse_mass, impacts, start_x, h, state);
+    stop_crossings(mobility, impacts, start_x, h, state);
   }
   // impact zones, the last resort: merged among the step's pairs, then checked against a fresh
   // search of the whole cloth, since rigid zone motion is not bounded by the pairs' margin
   auto all_crossings = [&] {
-    return crossings_among(collision_candidates(model, start_x, state.x, touching_m));
+    return crossings_among(
+        collision_candidates(model, start_x, state.x, touching_m, options.thickness_m));
   };
   std::vector<int> zone_parent(model.particle_count());
   std::iota(zone_parent.begin(), zone_parent.end(), 0);
@@ -282,11 +317,12 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
 SelfCollisionReport resolve_self_collisions(const SpringModel& model,
                                             const SelfCollisionOptions& options, double time_step_s,
                                             const Eigen::VectorXd& start_x,
-                                            const std::vector<std::uint8_t>& held,
+                                            const Eigen::Matrix3Xd& holding_normal,
                                             SelfCollisionCache& cache, State& state) {
   if (!options.enabled || model.triangles.rows() == 0) return {};
   const auto start = std::chrono::steady_clock::now();
-  SelfCollisionReport report = resolve(model, options, time_step_s, start_x, held, cache, state);
+  SelfCollisionReport report =
+      resolve(model, options, time_step_s, start_x, holding_normal, cache, state);
   report.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -1,19 +1,15 @@
 // A cloth dropped on a ball settles over it without entering it or passing through itself, checked
 // with CGAL's exact triangle-triangle intersection test.
 
-#include <CGAL/box_intersection_d.h>
 #include <gtest/gtest.h>
 
 #include "lib/scenario/scenario.hpp"
 #include "lib/simulation.hpp"
+#include "tests/lib/face_intersections.hpp"
 #include "tests/test_temp_dir.hpp"
-#include "topology/eigen_conversions.hpp"
 
 namespace tissu {
 namespace {
-
-using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t,
-                                                        CGAL::Box_intersection_d::ID_EXPLICIT>;
 
 const char* const small_drape = R"({
   "cloth": { "grid": { "size": [0.8, 0.8], "resolution": [24, 24], "origin": [-0.4, -0.4, 0.6],
@@ -29,29 +25,6 @@ const char* const small_drape = R"({
   "simulation": { "frames": 40, "substeps": 10 },
   "output": { "meshes": false }
 })";
-
-/// Pairs of faces that share no vertex and intersect, exactly.
-int intersecting_face_pairs(const IndexedMesh& mesh) {
-  std::vector<Kernel::Triangle_3> triangles;
-  std::vector<Box> boxes;
-  for (const std::vector<int>& f : mesh.faces) {
-    auto point = [&](int v) { return to_point(mesh.vertices[v]); };
-    triangles.emplace_back(point(f[0]), point(f[1]), point(f[2]));
-    boxes.emplace_back(triangles.back().bbox(), triangles.size() - 1);
-  }
-  int intersecting = 0;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
-    const std::vector<int>& fa = mesh.faces[a.handle()];
-    const std::vector<int>& fb = mesh.faces[b.handle()];
-    for (int u : fa) {
-      for (int v : fb) {
-        if (u == v) return;  // neighbours touch where they share a vertex
-      }
-    }
-    if (CGAL::do_intersect(triangles[a.handle()], triangles[b.handle()])) ++intersecting;
-  });
-  return intersecting;
-}
 
 TEST(Drape, AClothDroppedOnABallStaysOutsideItAndDoesNotPassThroughItself) {
   const Scenario scenario = parse_scenario(small_drape, "drape.json");
@@ -90,7 +63,7 @@ TEST(Drape, AClothDroppedOnABallStaysOutsideItAndDoesNotPassThroughItself) {
       ASSERT_GE((x - centre).norm(), 0.25 + 0.005 - 1e-9) << "sample " << k;
       ASSERT_GE(x.z(), 0.005 - 1e-9);
     }
-    EXPECT_EQ(intersecting_face_pairs(surfaces[k].current), 0) << "at frame " << 10 * k;
+    EXPECT_EQ(test::intersecting_face_pairs(surfaces[k]), 0) << "at frame " << 10 * k;
   }
 }
 

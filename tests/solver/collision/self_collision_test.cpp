@@ -123,9 +123,35 @@ TEST(SelfCollision, AParticleFlungFarStillHashesInBoundedTime) {
   Eigen::VectorXd end_x = scene.state.x;
   end_x.segment<3>(3 * 5) += Eigen::Vector3d(1e3, 1e3, 1e3);
   const std::vector<CandidatePair> pairs =
-      collision_candidates(scene.model, scene.state.x, end_x, thickness_m);
+      collision_candidates(scene.model, scene.state.x, end_x, thickness_m, thickness_m);
   EXPECT_TRUE(std::any_of(pairs.begin(), pairs.end(),
                           [](const CandidatePair& p) { return p.particle[0] == 5; }));
+}
+
+TEST(SelfCollision, PairsThatAreNeighboursInTheMaterialAreNotCandidates) {
+  // the upper sheet 3 mm above the lower one: as two layers they touch
+  StackedSheets scene;
+  scene.model.rest_x = scene.state.x;  // two layers 5 cm apart in the material
+  for (int p = side * side; p < scene.model.particle_count(); ++p) {
+    scene.state.x[3 * p + 2] -= 0.047;
+  }
+  const auto pairs_across = [&scene](double material_gap_m) {
+    const std::vector<CandidatePair> pairs = collision_candidates(
+        scene.model, scene.state.x, scene.state.x, thickness_m, material_gap_m);
+    return std::count_if(pairs.begin(), pairs.end(), [](const CandidatePair& p) {
+      return (p.particle[0] < side * side) != (p.particle[1] < side * side);
+    });
+  };
+  const auto touching = pairs_across(0.0);
+  ASSERT_GT(touching, 0);
+  EXPECT_EQ(pairs_across(thickness_m), touching);
+  // the two lips of one cut sheet: the upper sheet's material points are the lower's, and every
+  // pair across, 1 cm apart at most, shares a material point
+  for (int p = side * side; p < scene.model.particle_count(); ++p) {
+    scene.model.rest_x.segment<3>(3 * p) = scene.model.rest_x.segment<3>(3 * (p - side * side));
+  }
+  EXPECT_EQ(pairs_across(thickness_m), 0);
+  EXPECT_EQ(pairs_across(0.0), touching);  // a gap of 0 turns the rule off
 }
 
 TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
@@ -134,7 +160,7 @@ TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
   for (int p = side * side; p < scene.model.particle_count(); ++p)
     scene.state.x[3 * p + 2] -= 0.047;
   const std::vector<CandidatePair> pairs =
-      collision_candidates(scene.model, scene.state.x, scene.state.x, thickness_m);
+      collision_candidates(scene.model, scene.state.x, scene.state.x, thickness_m, thickness_m);
   bool lower_with_upper = false;
   for (const CandidatePair& pair : pairs) {
     for (int k = 1; k < 4; ++k) EXPECT_NE(pair.particle[0], pair.particle[k]);
@@ -145,13 +171,14 @@ TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
   // a flat sheet alone: its close pairs in the broad phase are all farther apart than 4 mm
   State flat_state;
   const SpringModel flat = test::grid_model(side, side, spacing_m, 1e-4, 200.0, 0.01, flat_state);
-  EXPECT_FALSE(collision_candidates(flat, flat_state.x, flat_state.x, thickness_m).empty());
+  EXPECT_FALSE(
+      collision_candidates(flat, flat_state.x, flat_state.x, thickness_m, thickness_m).empty());
   SelfCollisionOptions options;
   SelfCollisionCache cache;
   options.enabled = true;
   options.thickness_m = thickness_m;
-  const SelfCollisionReport report =
-      resolve_self_collisions(flat, options, 1e-3, flat_state.x, {}, cache, flat_state);
+  const SelfCollisionReport report = resolve_self_collisions(flat, options, 1e-3, flat_state.x,
+                                                             Eigen::Matrix3Xd(), cache, flat_state);
   EXPECT_EQ(report.proximities, 0);
   EXPECT_EQ(report.impacts, 0);
 }
