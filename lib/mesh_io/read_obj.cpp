@@ -13,15 +13,15 @@
 namespace tissu {
 namespace {
 
-/// The statements of the OBJ format that read_obj skips: all but `v`, `vt` and `f`.
-bool is_skipped_statement(std::string_view keyword) {
-  static constexpr std::array<std::string_view, 36> skipped = {
-      "vn",         "vp",        "p",      "l",      "o",      "g",     "s",        "mg",
-      "usemtl",     "mtllib",    "maplib", "usemap", "lod",    "bevel", "c_interp", "d_interp",
-      "shadow_obj", "trace_obj", "ctech",  "stech",  "cstype", "deg",   "bmat",     "step",
-      "curv",       "curv2",     "surf",   "parm",   "trim",   "hole",  "scrv",     "sp",
-      "end",        "con",       "call",   "csh"};
-  return std::find(skipped.begin(), skipped.end(), keyword) != skipped.end();
+/// Whether `word` can be a statement keyword: a letter, then letters, digits or underscores.
+/// Writers add their own statements (e.g. ARCSim's `ny`, `nv`, `e`), which are skipped; a line
+/// that starts otherwise is not OBJ.
+bool is_keyword(std::string_view word) {
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  return !word.empty() && letter(word.front()) &&
+         std::all_of(word.begin(), word.end(),
+                     [&](char c) { return letter(c) || digit(c) || c == '_'; });
 }
 
 /// The blank-separated words of `text`, up to a `#` that starts a comment.
@@ -75,10 +75,8 @@ class ObjParser {
       ++m_normals;
     } else if (keyword == "f") {
       face(words, line);
-    } else if (!is_skipped_statement(keyword)) {
-      fail(line, "unknown statement " + quoted(keyword) +
-                     " (expected v, vt, f or another OBJ "
-                     "statement)");
+    } else if (!is_keyword(keyword)) {
+      fail(line, "expected an OBJ statement (v, vt, f, ...), got " + quoted(keyword));
     }
   }
 

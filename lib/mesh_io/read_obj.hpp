@@ -27,10 +27,12 @@ struct ObjPolygons {
 /// Reads the `v`, `vt` and `f` statements of the OBJ `file`. Faces give corners as `v`, `v/vt`,
 /// `v//vn` or `v/vt/vn`, with 1-based indices, or negative ones counting back from the last
 /// element defined before the face (-1 the last); a statement may continue on the next line after
-/// a `\`, and `#` starts a comment. Points, lines, normals, groups, objects, smoothing, materials
-/// and free-form geometry are skipped. Every coordinate must be finite.
+/// a `\`, and `#` starts a comment. Every other statement (points, lines, normals, groups,
+/// objects, materials, free-form geometry, writers' own ones) is skipped. Every coordinate must be
+/// finite.
 ///
-/// Throws MeshError "<file>: line <n>: <what>" for an unknown statement, a missing or malformed
+/// Throws MeshError "<file>: line <n>: <what>" for a line that does not start with a statement
+/// keyword (a letter, then letters, digits or underscores), a missing or malformed
 /// number, a non-finite coordinate, a face of fewer than 3 corners, an index 0 or out of range,
 /// or a face giving texture coordinates at some corners only; "<file>: cannot read mesh: ..."
 /// when the file cannot be opened.

@@ -77,11 +77,12 @@ TEST(ReadObj, NegativeIndicesCountBackFromTheLastElementDefinedBeforeTheFace) {
   EXPECT_THAT(obj.faces[1], ElementsAre(0, 2, 3));
 }
 
+// ny, vl and e are ARCSim's own statements
 TEST(ReadObj, ReadsContinuedLinesCommentsCrLfAndSkipsOtherStatements) {
   const ObjPolygons obj = read_obj(obj_file(
       "# a square\r\nmtllib m.mtl\r\no square\r\ng left\r\nv 0 0 0 # origin\r\nv 1 0 0\r\n"
       "v 1 0 \\\r\n 1\r\nv 0 0 1 1.0\r\nusemtl cloth\r\ns off\r\nf 1 2 \\\n3\r\nl 1 4\r\np 4\r\n"
-      "f 1 3 4\r\n"));
+      "f 1 3 4\r\nny 0 0 0\r\nvl 3\r\ne 1 2\r\n"));
   ASSERT_EQ(obj.positions.size(), 4u);
   EXPECT_EQ(obj.positions[2], Eigen::Vector3d(1, 0, 1));
   ASSERT_EQ(obj.faces.size(), 2u);
@@ -98,7 +99,9 @@ TEST(ReadObj, ReadsNumbersToTheLastBit) {
 TEST(ReadObj, BadInputIsOneErrorNamingTheFileAndTheLine) {
   const std::string square = kSquare;  // lines 1 to 4
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"hello world\n", "line 1: unknown statement \"hello\""},
+      {square + "\x01\x02 binary\n",
+       "line 5: expected an OBJ statement (v, vt, f, ...), got \"??\""},
+      {square + "1 2 3\n", "line 5: expected an OBJ statement (v, vt, f, ...), got \"1\""},
       {square + "v 1 0\n", "line 5: expected the z coordinate of a vertex, got nothing"},
       {square + "v 1 x 0\n", "line 5: expected the y coordinate of a vertex, got \"x\""},
       {square + "v inf 0 0\n", "line 5: the vertex has a non-finite coordinate (inf, 0, 0)"},
