@@ -108,6 +108,9 @@ class ObjParser {
     if (word.size() > 1 && word.front() == '+' && word[1] != '-') word.remove_prefix(1);
     double value = 0.0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error == std::errc::result_out_of_range) {
+      fail(line, std::string(what) + " " + quoted(words[k]) + " is out of the range of a double");
+    }
     if (error != std::errc() || end != word.data() + word.size()) {
       fail(line, std::string("expected ") + what + ", got " + quoted(words[k]));
     }

@@ -104,6 +104,8 @@ TEST(ReadObj, BadInputIsOneErrorNamingTheFileAndTheLine) {
       {square + "1 2 3\n", "line 5: expected an OBJ statement (v, vt, f, ...), got \"1\""},
       {square + "v 1 0\n", "line 5: expected the z coordinate of a vertex, got nothing"},
       {square + "v 1 x 0\n", "line 5: expected the y coordinate of a vertex, got \"x\""},
+      {square + "v 1 1e400 0\n",
+       "line 5: the y coordinate of a vertex \"1e400\" is out of the range of a double"},
       {square + "v inf 0 0\n", "line 5: the vertex has a non-finite coordinate (inf, 0, 0)"},
       {square + "vt\n", "line 5: expected the u of a texture coordinate, got nothing"},
       {square + "f 1 2\n", "line 5: a face needs at least 3 corners, got 2"},
