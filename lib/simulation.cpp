@@ -213,7 +213,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     stats.write(row);
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
-                 current_mesh(lcc), output.mesh_format);
+                 current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
+                 output.mesh_format);
     }
     if (render.enabled && frame % render.every == 0)
       to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
@@ -230,7 +231,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, tearing, steps)) {
       const auto last_good =
           frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
-      write_mesh(last_good, current_mesh(lcc), output.mesh_format);
+      write_mesh(last_good, current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
+                 output.mesh_format);
       result.ok = false;
       result.failure = divergence_message(scenario, frame, *divergence, last_good);
       render_recorded(result);

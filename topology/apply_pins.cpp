@@ -75,9 +75,8 @@ std::vector<Vertex_handle> select(const std::vector<Candidate>& all, const PinSe
       for (int index : s.indices) {
         auto it = by_source.find(index);
         if (it == by_source.end()) {
-          throw PinError(
-              where + ": vertex " + std::to_string(index) +
-              " is not a vertex of the cloth (ids run from 0, unused vertices excluded)");
+          throw PinError(where + ": vertex " + std::to_string(index) +
+                         " is not a vertex of the cloth (ids run from 0)");
         }
         chosen.push_back(it->second);
       }

@@ -24,8 +24,11 @@ struct PinSelector {
   std::vector<Corner> corners;  ///< kind == corners
   Side side = Side::top;        ///< kind == side: vertices on that side, ordered along it ...
   int every = 1;                ///< ... keeping every n-th one and always both ends
-  std::vector<int> indices;     ///< kind == indices: input mesh (or grid) vertex ids
-  Eigen::AlignedBox3d box;      ///< kind == box: material coordinates inside it (m)
+  /// kind == indices: vertex ids of the IndexedMesh the cloth was built from (a grid's vertex
+  /// ids; for a mesh file, the scenario's 0-based file vertex numbers mapped by
+  /// build_scenario_cloth)
+  std::vector<int> indices;
+  Eigen::AlignedBox3d box;  ///< kind == box: material coordinates inside it (m)
   /// Velocity the chosen particles keep (m/s): a handle moving at constant speed
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
 };

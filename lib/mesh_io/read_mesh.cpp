@@ -6,7 +6,9 @@
 #include <assimp/LogStream.hpp>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -17,13 +19,15 @@
 #include <system_error>
 #include <vector>
 
+#include "lib/mesh_io/read_obj.hpp"
+
 namespace tissu {
 namespace {
 
 /// Importer messages that mean the file was broken but the importer still returned a scene: the
 /// OFF loader clamps out-of-range indices and leaves faces empty when the file is shorter than
 /// its header says; the glTF loader drops faces with out-of-range indices. Other messages (e.g. a
-/// missing OBJ material library) are harmless.
+/// missing texture or material file) are harmless.
 bool reports_repaired_input(std::string_view message) {
   return message.find("out of range") != std::string_view::npos ||
          message.find("out-of-range") != std::string_view::npos ||
@@ -99,58 +103,67 @@ bool is_polygon(const aiFace& face) {
   return face.mNumIndices >= 3;
 }
 
-/// Merges the polygons of several assimp meshes into one IndexedMesh, joining vertices at
-/// exactly the same (transformed) position.
+/// Polygons of one source: positions, and faces of ids into them that are in range.
+struct Polygons {
+  std::vector<Eigen::Vector3d> positions;  ///< (m)
+  std::vector<std::vector<int>> faces;
+};
+
+/// The polygons of `in` (points and lines left out), its positions moved by `transform`.
+/// Throws MeshError for an index out of range, naming the mesh when the scene has several.
+Polygons polygons_of(const aiMesh& in, unsigned mesh_index, bool several_meshes,
+                     const Eigen::Affine3d& transform) {
+  Polygons out;
+  for (unsigned v = 0; v < in.mNumVertices; ++v) {
+    const Eigen::Vector3d p(in.mVertices[v].x, in.mVertices[v].y, in.mVertices[v].z);
+    // a non-finite point is kept as read, so the error names the file's coordinates
+    out.positions.push_back(p.allFinite() ? Eigen::Vector3d(transform * p) : p);
+  }
+  for (unsigned f = 0; f < in.mNumFaces; ++f) {
+    const aiFace& face = in.mFaces[f];
+    if (!is_polygon(face)) continue;
+    std::vector<int>& ids = out.faces.emplace_back();
+    for (unsigned i = 0; i < face.mNumIndices; ++i) {
+      const unsigned index = face.mIndices[i];
+      if (index >= in.mNumVertices) {
+        // loaders store indices unsigned: a huge one was most likely negative in the file
+        const std::string id = index > static_cast<unsigned>(std::numeric_limits<int>::max())
+                                   ? std::to_string(static_cast<std::int32_t>(index))
+                                   : std::to_string(index);
+        const std::string where = several_meshes ? " of mesh " + std::to_string(mesh_index) : "";
+        throw MeshError("face " + std::to_string(f) + where + " refers to vertex " + id +
+                        ", but the mesh has " + std::to_string(in.mNumVertices) + " vertices");
+      }
+      ids.push_back(static_cast<int>(index));
+    }
+  }
+  return out;
+}
+
+/// Merges the polygons of several sources into one IndexedMesh, joining vertices at exactly the
+/// same position and leaving out those no face uses.
 class MeshMerger {
  public:
-  explicit MeshMerger(bool several_meshes) : m_several_meshes(several_meshes) {}
-
-  void add(const aiMesh& in, unsigned mesh_index, const Eigen::Affine3d& transform) {
-    std::vector<int> ids(in.mNumVertices, -1);
-    for (unsigned f = 0; f < in.mNumFaces; ++f) {
-      const aiFace& face = in.mFaces[f];
-      if (!is_polygon(face)) {
-        continue;
-      }
-      for (unsigned i = 0; i < face.mNumIndices; ++i) {
-        if (face.mIndices[i] >= in.mNumVertices) {
-          throw_index_out_of_range(in, mesh_index, f, face.mIndices[i]);
-        }
-        ids[face.mIndices[i]] = 0;
-      }
+  /// Adds `in`; returns the mesh vertex of each of its positions, -1 for one no face uses.
+  std::vector<int> add(const Polygons& in) {
+    std::vector<char> used(in.positions.size(), 0);
+    for (const std::vector<int>& face : in.faces) {
+      for (int v : face) used[v] = 1;
     }
-    for (unsigned v = 0; v < in.mNumVertices; ++v) {
-      if (ids[v] == 0) {
-        const Eigen::Vector3d p(in.mVertices[v].x, in.mVertices[v].y, in.mVertices[v].z);
-        // a non-finite point is kept as read, so the error names the file's coordinates
-        ids[v] = vertex_id(p.allFinite() ? Eigen::Vector3d(transform * p) : p);
-      }
+    std::vector<int> ids(in.positions.size(), -1);
+    for (std::size_t v = 0; v < in.positions.size(); ++v) {
+      if (used[v]) ids[v] = vertex_id(in.positions[v]);
     }
-    for (unsigned f = 0; f < in.mNumFaces; ++f) {
-      const aiFace& face = in.mFaces[f];
-      if (is_polygon(face)) {
-        std::vector<int>& out = m_mesh.faces.emplace_back();
-        for (unsigned i = 0; i < face.mNumIndices; ++i) {
-          out.push_back(ids[face.mIndices[i]]);
-        }
-      }
+    for (const std::vector<int>& face : in.faces) {
+      std::vector<int>& out = m_mesh.faces.emplace_back();
+      for (int v : face) out.push_back(ids[v]);
     }
+    return ids;
   }
 
   IndexedMesh take() { return std::move(m_mesh); }
 
  private:
-  [[noreturn]] void throw_index_out_of_range(const aiMesh& in, unsigned mesh_index, unsigned face,
-                                             unsigned index) const {
-    // loaders store indices unsigned: a huge one was most likely negative in the file
-    const std::string id = index > static_cast<unsigned>(std::numeric_limits<int>::max())
-                               ? std::to_string(static_cast<std::int32_t>(index))
-                               : std::to_string(index);
-    const std::string where = m_several_meshes ? " of mesh " + std::to_string(mesh_index) : "";
-    throw MeshError("face " + std::to_string(face) + where + " refers to vertex " + id +
-                    ", but the mesh has " + std::to_string(in.mNumVertices) + " vertices");
-  }
-
   /// Id of the vertex at `p`, added if new; non-finite positions are never joined.
   int vertex_id(const Eigen::Vector3d& p) {
     const int next = static_cast<int>(m_mesh.vertices.size());
@@ -164,28 +177,55 @@ class MeshMerger {
     return next;
   }
 
-  bool m_several_meshes;
   IndexedMesh m_mesh;
   std::map<std::array<double, 3>, int> m_ids;
 };
 
-void add_node(const aiScene& scene, const aiNode& node, const Eigen::Affine3d& parent,
-              MeshMerger& merger) {
+/// The meshes a scene places, in node order, each with its node transforms.
+struct PlacedMesh {
+  unsigned mesh_index = 0;
+  Eigen::Affine3d transform;
+};
+
+void collect_placed_meshes(const aiScene& scene, const aiNode& node, const Eigen::Affine3d& parent,
+                           std::vector<PlacedMesh>& out) {
   const Eigen::Affine3d transform = parent * to_eigen(node.mTransformation);
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const unsigned mesh_index = node.mMeshes[i];
     if (mesh_index < scene.mNumMeshes && scene.mMeshes[mesh_index] != nullptr) {
-      merger.add(*scene.mMeshes[mesh_index], mesh_index, transform);
+      out.push_back({mesh_index, transform});
     }
   }
   for (unsigned i = 0; i < node.mNumChildren; ++i) {
-    add_node(scene, *node.mChildren[i], transform, merger);
+    collect_placed_meshes(scene, *node.mChildren[i], transform, out);
   }
 }
 
-/// Reads `file` without post-processing: assimp's steps (e.g. joining vertices) trust the
-/// indices, so they run into out-of-range ones before we can report them.
-IndexedMesh import_mesh(const std::filesystem::path& file) {
+std::string lowercase_extension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+/// Why a file read through assimp has no vertex numbering, or "" if its single placed mesh keeps
+/// the file's vertex order (assimp's PLY, OFF and glTF importers do).
+std::string no_numbering_reason(const std::string& extension, const aiScene& scene,
+                                std::size_t placed_meshes) {
+  if (extension == ".stl") {
+    return "STL stores every triangle's corners on their own, so its vertices have no numbers";
+  }
+  if (extension != ".ply" && extension != ".off" && extension != ".gltf" && extension != ".glb") {
+    return "tissu knows the vertex numbers of OBJ, PLY, OFF and glTF/GLB files only";
+  }
+  if (scene.mNumMeshes != 1 || placed_meshes != 1) {
+    return "the file holds " + std::to_string(scene.mNumMeshes) + " meshes placed " +
+           std::to_string(placed_meshes) + " times, so a vertex number could mean several vertices";
+  }
+  return "";
+}
+
+void check_readable(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(file, error);
@@ -195,6 +235,22 @@ IndexedMesh import_mesh(const std::filesystem::path& file) {
   if (std::filesystem::is_directory(status)) {
     throw MeshError(name + ": cannot read mesh: it is a directory, not a file");
   }
+}
+
+/// Reads an OBJ file with read_obj: the file's vertex numbers are those of its `v` statements.
+NumberedMesh import_obj(const std::filesystem::path& file) {
+  ObjPolygons obj = read_obj(file);
+  MeshMerger merger;
+  NumberedMesh out;
+  out.mesh_vertex_of_file_vertex = merger.add({std::move(obj.positions), std::move(obj.faces)});
+  out.mesh = merger.take();
+  return out;
+}
+
+/// Reads `file` through assimp, without post-processing: assimp's steps (e.g. joining vertices)
+/// trust the indices, so they run into out-of-range ones before we can report them.
+NumberedMesh import_with_assimp(const std::filesystem::path& file) {
+  const std::string name = file.string();
   const ScopedRepairLog repairs;
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(name, 0);
@@ -205,27 +261,42 @@ IndexedMesh import_mesh(const std::filesystem::path& file) {
     throw MeshError(name + ": cannot read mesh: the importer reported \"" + repairs.log().first() +
                     "\"");
   }
-  MeshMerger merger(scene->mNumMeshes > 1);
+  std::vector<PlacedMesh> placed;
   if (scene->mRootNode != nullptr) {
+    collect_placed_meshes(*scene, *scene->mRootNode, Eigen::Affine3d::Identity(), placed);
+  }
+  MeshMerger merger;
+  NumberedMesh out;
+  for (const PlacedMesh& p : placed) {
     try {
-      add_node(*scene, *scene->mRootNode, Eigen::Affine3d::Identity(), merger);
+      out.mesh_vertex_of_file_vertex = merger.add(polygons_of(
+          *scene->mMeshes[p.mesh_index], p.mesh_index, scene->mNumMeshes > 1, p.transform));
     } catch (const MeshError& e) {
       throw MeshError(name + ": " + e.what());
     }
   }
-  return merger.take();
+  out.mesh = merger.take();
+  out.no_numbering_reason = no_numbering_reason(lowercase_extension(file), *scene, placed.size());
+  if (!out.has_vertex_numbering() || placed.empty()) out.mesh_vertex_of_file_vertex.clear();
+  return out;
 }
 
 }  // namespace
 
-IndexedMesh read_mesh(const std::filesystem::path& file) {
-  IndexedMesh mesh = import_mesh(file);
+NumberedMesh read_numbered_mesh(const std::filesystem::path& file) {
+  check_readable(file);
+  NumberedMesh out =
+      lowercase_extension(file) == ".obj" ? import_obj(file) : import_with_assimp(file);
   try {
-    validate_indexed_mesh(mesh);
+    validate_indexed_mesh(out.mesh);
   } catch (const MeshError& e) {
     throw MeshError(file.string() + ": " + e.what());
   }
-  return mesh;
+  return out;
+}
+
+IndexedMesh read_mesh(const std::filesystem::path& file) {
+  return read_numbered_mesh(file).mesh;
 }
 
 IndexedMesh read_polygons(const std::filesystem::path& file) {

@@ -1,12 +1,28 @@
 #pragma once
 /// \file
-/// Reading a cloth mesh from a file (OBJ, PLY, glTF/GLB, STL, OFF) through assimp.
+/// Reading a cloth mesh from a file: OBJ with tissu's own reader (read_obj.hpp), PLY, glTF/GLB,
+/// STL and OFF through assimp.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "topology/indexed_mesh.hpp"
 
 namespace tissu {
+
+/// A mesh as read_mesh makes it, and how the file's own vertices map to its vertices.
+struct NumberedMesh {
+  IndexedMesh mesh;
+  /// For each vertex of the file, in the file's order (0-based): the mesh vertex it became, or -1
+  /// if no face uses it. Empty when the file has no vertex numbering (see no_numbering_reason).
+  std::vector<int> mesh_vertex_of_file_vertex;
+  /// Why the file's vertices have no numbers, e.g. for STL, whose triangles each store their own
+  /// corners; empty when mesh_vertex_of_file_vertex is set.
+  std::string no_numbering_reason;
+
+  bool has_vertex_numbering() const { return no_numbering_reason.empty(); }
+};
 
 /// Reads the polygon mesh in `file` and checks it with validate_indexed_mesh.
 ///
@@ -14,12 +30,20 @@ namespace tissu {
 /// Only positions are kept: vertices at exactly the same position are joined, so a cloth is not
 /// cut at UV or normal seams, nor between the groups or objects of one file. Points and lines
 /// are ignored, and so are vertices no face uses; triangles and quads are kept as they are (never
-/// triangulated). Vertices keep the importer's order: the file's order for PLY and OFF, the
-/// order the faces first use them for OBJ.
+/// triangulated). The mesh's vertices come in the order of the file's vertices that faces use.
+///
+/// The file's vertex numbering (NumberedMesh::mesh_vertex_of_file_vertex) is the order of the `v`
+/// statements in OBJ, of the vertex element in PLY, of the vertex list in OFF, and of the POSITION
+/// accessor of a glTF/GLB file with a single mesh primitive placed once. STL files, files with
+/// several meshes (or one placed several times) and other formats have none.
 ///
 /// Throws MeshError whose message starts with the file path: when the file is missing or
-/// unreadable, when the importer fails or reports indices out of range, or when the mesh fails
-/// validate_indexed_mesh. Not safe to call concurrently with other uses of assimp's logger.
+/// unreadable, when the reader fails or reports indices out of range (for OBJ, naming the line),
+/// or when the mesh fails validate_indexed_mesh. Not safe to call concurrently with other uses of
+/// assimp's logger.
+NumberedMesh read_numbered_mesh(const std::filesystem::path& file);
+
+/// The mesh of read_numbered_mesh(file).
 IndexedMesh read_mesh(const std::filesystem::path& file);
 
 /// Reads `file` as read_mesh does, but without validate_indexed_mesh: for obstacles, which may be

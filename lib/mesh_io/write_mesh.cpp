@@ -1,55 +1,48 @@
 #include "lib/mesh_io/write_mesh.hpp"
 
-#include <assimp/material.h>
-#include <assimp/scene.h>
-#include <assimp/Exporter.hpp>
-
-#include <memory>
+#include <Eigen/Geometry>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include "lib/mesh_io/mesh_encoding.hpp"
 
 namespace tissu {
 namespace {
 
-/// A one-mesh scene holding `mesh`: one default material and a root node referencing the mesh.
-/// The aiScene destructor frees every part, so each part is attached as soon as it is created.
-std::unique_ptr<aiScene> make_scene(const IndexedMesh& mesh) {
-  auto scene = std::make_unique<aiScene>();
-  scene->mRootNode = new aiNode();
-  scene->mRootNode->mMeshes = new unsigned[1]{0};
-  scene->mRootNode->mNumMeshes = 1;
+/// Throws std::runtime_error "<file>: cannot write mesh: <what>".
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
+  throw std::runtime_error(file.string() + ": cannot write mesh: " + what);
+}
 
-  scene->mMaterials = new aiMaterial* [1] {};
-  scene->mNumMaterials = 1;
-  scene->mMaterials[0] = new aiMaterial();
-
-  scene->mMeshes = new aiMesh* [1] {};
-  scene->mNumMeshes = 1;
-  scene->mMeshes[0] = new aiMesh();
-  aiMesh& out = *scene->mMeshes[0];
-  out.mMaterialIndex = 0;
-
-  out.mVertices = new aiVector3D[mesh.vertices.size()];
-  out.mNumVertices = static_cast<unsigned>(mesh.vertices.size());
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const Eigen::Vector3d& p = mesh.vertices[v];
-    out.mVertices[v] = aiVector3D(static_cast<ai_real>(p.x()), static_cast<ai_real>(p.y()),
-                                  static_cast<ai_real>(p.z()));
-  }
-
-  out.mFaces = new aiFace[mesh.faces.size()];
-  out.mNumFaces = static_cast<unsigned>(mesh.faces.size());
+void check_faces(const std::filesystem::path& file, const IndexedMesh& mesh) {
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const std::vector<int>& face = mesh.faces[f];
-    aiFace& target = out.mFaces[f];
-    target.mIndices = new unsigned[face.size()];
-    target.mNumIndices = static_cast<unsigned>(face.size());
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      target.mIndices[i] = static_cast<unsigned>(face[i]);
+    if (face.size() < 3 || face.size() > 255) {
+      fail(file, "face " + std::to_string(f) + " has " + std::to_string(face.size()) +
+                     " vertices, expected 3 to 255");
     }
-    out.mPrimitiveTypes |= face.size() == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
+    for (int v : face) {
+      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size()) {
+        fail(file, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                       ", but the mesh has " + std::to_string(mesh.vertices.size()) + " vertices");
+      }
+    }
   }
-  return scene;
+}
+
+void write_file(const std::filesystem::path& file, const std::string& contents) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) fail(file, "cannot open it for writing");
+  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  out.close();
+  if (out.fail()) fail(file, "writing failed (is the disk full?)");
+}
+
+void write(const std::filesystem::path& file, const IndexedMesh& mesh, const VertexRestData* rest,
+           MeshFormat format) {
+  check_faces(file, mesh);
+  write_file(file, format == MeshFormat::obj ? obj_text(mesh, rest) : ply_bytes(mesh, rest));
 }
 
 }  // namespace
@@ -75,23 +68,34 @@ const char* extension(MeshFormat format) {
   return "";
 }
 
+std::vector<Eigen::Vector3d> rest_texture_coordinates(const std::vector<Eigen::Vector3d>& rest_m,
+                                                      const ClothFrame& frame) {
+  const Eigen::Vector3d u = frame.u_axis.normalized();
+  Eigen::Vector3d normal = u.cross(frame.v_axis);
+  if (!(normal.norm() > 1e-12)) {  // v along u: any normal will do
+    normal = u.unitOrthogonal();
+  }
+  normal.normalize();
+  const Eigen::Vector3d v = normal.cross(u);
+  std::vector<Eigen::Vector3d> uvw;
+  uvw.reserve(rest_m.size());
+  for (const Eigen::Vector3d& r : rest_m) uvw.emplace_back(r.dot(u), r.dot(v), r.dot(normal));
+  return uvw;
+}
+
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh, MeshFormat format) {
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    for (int v : mesh.faces[f]) {
-      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size()) {
-        throw std::runtime_error(file.string() + ": cannot write mesh: face " + std::to_string(f) +
-                                 " refers to vertex " + std::to_string(v) + ", but the mesh has " +
-                                 std::to_string(mesh.vertices.size()) + " vertices");
-      }
-    }
+  write(file, mesh, nullptr, format);
+}
+
+void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh,
+                const RestCoordinates& rest, MeshFormat format) {
+  if (rest.rest_m.size() != mesh.vertices.size()) {
+    fail(file, std::to_string(rest.rest_m.size()) + " rest positions for " +
+                   std::to_string(mesh.vertices.size()) + " vertices");
   }
-  const std::unique_ptr<aiScene> scene = make_scene(mesh);
-  // "objnomtl" writes no .mtl file next to the .obj; "plyb" is binary little-endian PLY
-  const char* exporter_id = format == MeshFormat::obj ? "objnomtl" : "plyb";
-  Assimp::Exporter exporter;
-  if (exporter.Export(scene.get(), exporter_id, file.string()) != aiReturn_SUCCESS) {
-    throw std::runtime_error(file.string() + ": cannot write mesh: " + exporter.GetErrorString());
-  }
+  const std::vector<Eigen::Vector3d> uvw = rest_texture_coordinates(rest.rest_m, rest.frame);
+  const VertexRestData data{uvw, rest.rest_m};
+  write(file, mesh, &data, format);
 }
 
 }  // namespace tissu

@@ -1,11 +1,15 @@
 #pragma once
 /// \file
-/// Writing a mesh to an OBJ or PLY file through assimp, e.g. one file per simulated frame.
+/// Writing a cloth's mesh to an OBJ or PLY file with tissu's own writers, e.g. one file per
+/// simulated frame: every vertex in order, in double precision, faces as they are.
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 #include "topology/indexed_mesh.hpp"
+#include "topology/pin_selection.hpp"
 
 namespace tissu {
 
@@ -22,9 +26,40 @@ MeshFormat mesh_format_from_string(std::string_view name);
 /// The file name extension of `format`, without the dot: "obj" or "ply".
 const char* extension(MeshFormat format);
 
-/// Writes the vertices and faces (3 or 4 vertex ids each, kept as they are) of `mesh` to `file`,
-/// overwriting it. Positions are written in single precision. Throws std::runtime_error naming
-/// the file if it cannot be written.
+/// Material (rest) coordinates written beside a mesh's positions, and the cloth frame in which
+/// they become texture coordinates.
+struct RestCoordinates {
+  std::vector<Eigen::Vector3d> rest_m;  ///< #V material coordinates (m), the mesh's vertex order
+  ClothFrame frame;                     ///< the cloth's u and v axes (unit), as in the scenario
+};
+
+/// Texture coordinates (u, v, w) (m) of material coordinates `rest_m`: their components along an
+/// orthonormal frame made from `frame`: u along u_axis, v along v_axis made orthogonal to it, w
+/// along the normal u_axis x v_axis. For a flat sheet in the u-v plane (a grid, a planar mesh)
+/// (u, v) is an isometric parametrisation of the rest shape, in metres, and w is constant; for a
+/// curved rest shape (u, v) is its projection on that plane, and w keeps what it loses, so that
+/// rest = u u_axis + v v_axis' + w normal recovers the material coordinates to round-off.
+std::vector<Eigen::Vector3d> rest_texture_coordinates(const std::vector<Eigen::Vector3d>& rest_m,
+                                                      const ClothFrame& frame);
+
+/// Writes `mesh` to `file`, overwriting it: every vertex, in the mesh's order (unused and
+/// coincident ones too), and every face with its 3 or 4 vertex ids as they are. Numbers are
+/// written so that they read back to the same doubles: OBJ in text (shortest round-trip
+/// decimal), PLY as binary little-endian doubles.
+///
+/// With `rest`, the material coordinates are written too:
+/// - OBJ: one `vt u v w` per vertex, the rest_texture_coordinates, with the vertex's index
+///   (faces `f a/a b/b c/c`), since OBJ has no other per-vertex field;
+/// - PLY: vertex properties `s t` (the u and v of rest_texture_coordinates, which most readers
+///   take as texture coordinates) and `rest_x rest_y rest_z`, the material coordinates as they
+///   are (all double).
+/// A comment at the top of the file says what each field holds.
+///
+/// Throws std::runtime_error naming the file if a face refers to a vertex out of range, has
+/// fewer than 3 or more than 255 vertices, `rest` does not have one entry per vertex, or the
+/// file cannot be written.
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh, MeshFormat format);
+void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh,
+                const RestCoordinates& rest, MeshFormat format);
 
 }  // namespace tissu

@@ -343,8 +343,9 @@ TEST(ReadMesh, NonManifoldMeshIsRejected) {
 TEST(ReadMesh, NanCoordinateIsRejected) {
   const fs::path file =
       write_file(test_dir() / "nan.obj", "v 0 0 0\nv nan 0 0\nv 1 0 1\nf 1 2 3\n");
-  EXPECT_THAT(read_error(file),
-              HasSubstr(file.string() + ": vertex 1 has a non-finite coordinate (nan, 0, 0)"));
+  EXPECT_THAT(
+      read_error(file),
+      HasSubstr(file.string() + ": line 2: the vertex has a non-finite coordinate (nan, 0, 0)"));
 }
 
 TEST(ReadMesh, PlyNanCoordinateIsRejected) {

@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// The contents of the files write_mesh writes (write_mesh.hpp says what they hold). Internal to
+/// lib/mesh_io: the callers have checked the face ids and sizes.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "topology/indexed_mesh.hpp"
+
+namespace tissu {
+
+/// Per-vertex rest data written beside the positions, both in the mesh's vertex order.
+struct VertexRestData {
+  const std::vector<Eigen::Vector3d>& texture_uvw;  ///< #V rest_texture_coordinates (m)
+  const std::vector<Eigen::Vector3d>& rest_m;       ///< #V material coordinates (m)
+};
+
+/// The text of an OBJ file of `mesh`, with one `vt` per vertex when `rest` is given.
+std::string obj_text(const IndexedMesh& mesh, const VertexRestData* rest);
+
+/// The bytes of a binary little-endian PLY file of `mesh`, with the vertex properties
+/// s t rest_x rest_y rest_z when `rest` is given.
+std::string ply_bytes(const IndexedMesh& mesh, const VertexRestData* rest);
+
+}  // namespace tissu

@@ -1,0 +1,152 @@
+// The meshes a run writes are the simulation: every particle in particle order, to the last bit,
+// the faces as simulated and the rest coordinates, after refinement and after a knife cut.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "lib/mesh_io/read_obj.hpp"
+#include "lib/mesh_io/write_mesh.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "lib/simulation.hpp"
+#include "tests/lib/written_ply.hpp"
+#include "tests/test_temp_dir.hpp"
+
+namespace tissu {
+namespace {
+
+/// A 0.4 m x 0.4 m sheet hanging from its top side, stepped for 3 frames; `extra` adds sections.
+std::string hanging_sheet(const std::string& cells, const std::string& format,
+                          const std::string& extra) {
+  return R"({
+  "cloth": { "grid": { "size": [0.4, 0.4], "resolution": [4, 4], "cells": ")" +
+         cells + R"(" },
+             "density": 0.2,
+             "springs": { "structural": { "stiffness": 200, "damping": 0.1 } } },
+  "pins": [ { "side": "top" } ],
+  "simulation": { "frames": 3, "substeps": 5 },
+  "output": { "mesh_format": ")" +
+         format + R"(" })" + extra + R"(
+})";
+}
+
+/// What a run wrote and what the model was, frame by frame.
+struct Recorded {
+  std::filesystem::path dir;
+  std::vector<FrameStats> stats;
+  std::vector<MaterialSurface> surfaces;  ///< the model's particles and faces, per frame
+  ClothFrame frame;
+};
+
+Recorded run(const std::string& scenario_json, const std::string& name) {
+  Recorded out;
+  RunOptions options;
+  options.output_dir = out.dir = test::fresh_temp_dir("frame_meshes/" + name);
+  options.on_frame = [&](const FrameStats& s) { out.stats.push_back(s); };
+  options.on_surface = [&](int, const MaterialSurface& s) { out.surfaces.push_back(s); };
+  const Scenario scenario = parse_scenario(scenario_json, name + ".json");
+  out.frame = scenario.cloth.frame;
+  const RunResult result = run_scenario(scenario, options);
+  EXPECT_TRUE(result.ok) << result.failure;
+  return out;
+}
+
+std::filesystem::path frame_file(const Recorded& r, int frame, const char* extension) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.%s", frame, extension);
+  return r.dir / name;
+}
+
+/// Connected pieces of the faces, joined through shared vertex ids only.
+int pieces(const std::vector<std::vector<int>>& faces, std::size_t vertices) {
+  std::vector<int> parent(vertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const std::vector<int>& f : faces) {
+    for (int v : f) parent[root(v)] = root(f.front());
+  }
+  std::map<int, int> roots;
+  for (const std::vector<int>& f : faces) roots[root(f.front())] = 1;
+  return static_cast<int>(roots.size());
+}
+
+/// The OBJ of every frame holds the model's particles to the last bit, its faces and its rest
+/// coordinates, and as many particles and pieces as stats.csv says.
+void expect_obj_frames_are_the_model(const Recorded& r) {
+  ASSERT_EQ(r.surfaces.size(), r.stats.size());
+  for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
+    const MaterialSurface& model = r.surfaces[f];
+    const ObjPolygons obj = read_obj(frame_file(r, static_cast<int>(f), "obj"));
+    ASSERT_EQ(obj.positions.size(), static_cast<std::size_t>(r.stats[f].particles)) << f;
+    EXPECT_EQ(obj.positions, model.current.vertices) << "frame " << f;
+    EXPECT_EQ(obj.faces, model.current.faces) << "frame " << f;
+    EXPECT_EQ(static_cast<int>(obj.faces.size()), r.stats[f].faces) << "frame " << f;
+    EXPECT_EQ(pieces(obj.faces, obj.positions.size()), r.stats[f].pieces) << "frame " << f;
+    EXPECT_EQ(obj.texture_coordinates, rest_texture_coordinates(model.rest_m, r.frame));
+    EXPECT_EQ(obj.face_texture_coordinates, obj.faces) << "frame " << f;
+  }
+}
+
+void expect_ply_frames_are_the_model(const Recorded& r) {
+  ASSERT_EQ(r.surfaces.size(), r.stats.size());
+  for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
+    const MaterialSurface& model = r.surfaces[f];
+    const test::WrittenPly ply = test::read_written_ply(frame_file(r, static_cast<int>(f), "ply"));
+    const std::vector<double>& x = ply.vertex_values.at("x");
+    ASSERT_EQ(x.size(), static_cast<std::size_t>(r.stats[f].particles)) << f;
+    for (std::size_t v = 0; v < x.size(); ++v) {
+      const auto at = [&](const char* name) { return ply.vertex_values.at(name)[v]; };
+      ASSERT_EQ(Eigen::Vector3d(at("x"), at("y"), at("z")), model.current.vertices[v])
+          << "frame " << f << " vertex " << v;
+      ASSERT_EQ(Eigen::Vector3d(at("rest_x"), at("rest_y"), at("rest_z")), model.rest_m[v])
+          << "frame " << f << " vertex " << v;
+    }
+    EXPECT_EQ(ply.faces, model.current.faces) << "frame " << f;
+    EXPECT_EQ(pieces(ply.faces, x.size()), r.stats[f].pieces) << "frame " << f;
+  }
+}
+
+// refined at once (edges over 6 cm are bisected), then cut across at mid-height in frame 2
+const char* const kRefinedAndCut = R"(,
+  "adaptive": { "max_edge_length": 0.06, "min_edge_length": 0.005, "hysteresis": 0 },
+  "tearing": { "cuts": [ { "time": 0.05, "line": [[-0.1, 0, 0.2], [0.5, 0, 0.2]] } ] })";
+
+TEST(FrameMeshes, ObjFramesAreTheModelAfterRefinementAndACut) {
+  const Recorded r = run(hanging_sheet("triangles", "obj", kRefinedAndCut), "refined_cut_obj");
+  ASSERT_EQ(r.stats.size(), 4u);
+  EXPECT_GT(r.stats[1].particles, r.stats[0].particles);  // refined
+  EXPECT_GT(r.stats[3].particles, r.stats[1].particles);  // the cut split the particles on it
+  EXPECT_EQ(r.stats[3].pieces, 2);
+  expect_obj_frames_are_the_model(r);
+}
+
+TEST(FrameMeshes, PlyFramesAreTheModelAfterRefinementAndACut) {
+  const Recorded r = run(hanging_sheet("triangles", "ply", kRefinedAndCut), "refined_cut_ply");
+  ASSERT_EQ(r.stats.size(), 4u);
+  EXPECT_EQ(r.stats[3].pieces, 2);
+  expect_ply_frames_are_the_model(r);
+}
+
+TEST(FrameMeshes, QuadsStayQuadsInBothFormats) {
+  for (const char* format : {"obj", "ply"}) {
+    const Recorded r = run(hanging_sheet("quads", format, ""), std::string("quads_") + format);
+    for (const MaterialSurface& s : r.surfaces) {
+      ASSERT_EQ(s.current.faces.size(), 16u);
+      for (const std::vector<int>& face : s.current.faces) EXPECT_EQ(face.size(), 4u);
+    }
+    if (std::string(format) == "obj") {
+      expect_obj_frames_are_the_model(r);
+    } else {
+      expect_ply_frames_are_the_model(r);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tissu

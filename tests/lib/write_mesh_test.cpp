@@ -1,0 +1,163 @@
+// tissu's mesh writers: every vertex in order (coincident ones too), doubles that read back to
+// the same bits, faces as they are, and the rest coordinates as texture coordinates.
+
+#include "lib/mesh_io/write_mesh.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "lib/mesh_io/read_mesh.hpp"
+#include "lib/mesh_io/read_obj.hpp"
+#include "tests/lib/written_ply.hpp"
+#include "tests/test_temp_dir.hpp"
+
+namespace tissu {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+fs::path test_dir() {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return test::fresh_temp_dir(std::string("write_mesh/") + info->name());
+}
+
+/// Two pieces of a cut sheet, a quad and a triangle, that share the positions of their cut edge
+/// but not their vertices, at coordinates that need all 17 digits; rest coordinates in the x-z
+/// plane moved off the grid's origin.
+struct CutSheet {
+  IndexedMesh mesh;
+  RestCoordinates rest;
+};
+
+CutSheet cut_sheet() {
+  CutSheet s;
+  const double third = 1.0 / 3.0;
+  s.mesh.vertices = {{0, 0, 0},
+                     {third, 1e-17, 0},
+                     {third, 0, third},
+                     {0, -0.0, third},
+                     {third, 1e-17, 0},
+                     {third, 0, third},
+                     {0.7, 0.1, std::acos(-1.0) / 10}};
+  s.mesh.faces = {{0, 1, 2, 3}, {4, 6, 5}};
+  for (const Eigen::Vector3d& p : s.mesh.vertices) {
+    s.rest.rest_m.push_back(Eigen::Vector3d(p.x() + 0.1, 0.0, p.z() + 2.0 / 7.0));
+  }
+  return s;
+}
+
+TEST(RestTextureCoordinates, AreTheRestCoordinatesAlongTheClothFrame) {
+  const std::vector<Eigen::Vector3d> rest = {{0.5, 0.25, 2.0}, {-1.0, 3.0, 0.125}};
+  // the default frame: u along x, v along z, their normal u x v along -y
+  const std::vector<Eigen::Vector3d> uvw = rest_texture_coordinates(rest, ClothFrame{});
+  EXPECT_EQ(uvw[0], Eigen::Vector3d(0.5, 2.0, -0.25));
+  EXPECT_EQ(uvw[1], Eigen::Vector3d(-1.0, 0.125, -3.0));
+}
+
+TEST(RestTextureCoordinates, GiveBackTheRestCoordinatesForAnyFrame) {
+  // v_axis not orthogonal to u_axis: the writer makes it so
+  const ClothFrame frame{Eigen::Vector3d(1, 1, 0).normalized(),
+                         Eigen::Vector3d(0, 1, 1).normalized()};
+  const Eigen::Vector3d u = frame.u_axis, n = u.cross(frame.v_axis).normalized(), v = n.cross(u);
+  const std::vector<Eigen::Vector3d> rest = {{0.3, -0.7, 1.1}, {2.0, 0.0, -5.0}};
+  const std::vector<Eigen::Vector3d> uvw = rest_texture_coordinates(rest, frame);
+  for (std::size_t k = 0; k < rest.size(); ++k) {
+    const Eigen::Vector3d back = uvw[k].x() * u + uvw[k].y() * v + uvw[k].z() * n;
+    EXPECT_LT((back - rest[k]).norm(), 1e-15) << k;
+  }
+}
+
+TEST(WriteMesh, ObjKeepsEveryVertexInOrderToTheLastBitWithRestAsTextureCoordinates) {
+  const CutSheet s = cut_sheet();
+  const fs::path file = test_dir() / "cut.obj";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::obj);
+  const ObjPolygons back = read_obj(file);
+  ASSERT_EQ(back.positions.size(), s.mesh.vertices.size());
+  for (std::size_t v = 0; v < s.mesh.vertices.size(); ++v) {
+    EXPECT_EQ(back.positions[v], s.mesh.vertices[v]) << "vertex " << v;
+  }
+  EXPECT_TRUE(std::signbit(back.positions[3].y()));  // -0 stays -0
+  EXPECT_EQ(back.faces, s.mesh.faces);
+  EXPECT_EQ(back.texture_coordinates, rest_texture_coordinates(s.rest.rest_m, s.rest.frame));
+  EXPECT_EQ(back.face_texture_coordinates, s.mesh.faces);  // vertex k has texture coordinate k
+}
+
+TEST(WriteMesh, PlyKeepsEveryVertexInOrderInDoublesWithRestCoordinates) {
+  const CutSheet s = cut_sheet();
+  const fs::path file = test_dir() / "cut.ply";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::ply);
+  const test::WrittenPly back = test::read_written_ply(file);
+  EXPECT_EQ(back.vertex_properties,
+            (std::vector<std::string>{"x", "y", "z", "s", "t", "rest_x", "rest_y", "rest_z"}));
+  const std::vector<Eigen::Vector3d> uvw = rest_texture_coordinates(s.rest.rest_m, s.rest.frame);
+  ASSERT_EQ(back.vertex_values.at("x").size(), s.mesh.vertices.size());
+  for (std::size_t v = 0; v < s.mesh.vertices.size(); ++v) {
+    const auto value = [&](const char* name) { return back.vertex_values.at(name)[v]; };
+    EXPECT_EQ(Eigen::Vector3d(value("x"), value("y"), value("z")), s.mesh.vertices[v]) << v;
+    EXPECT_EQ(Eigen::Vector3d(value("rest_x"), value("rest_y"), value("rest_z")), s.rest.rest_m[v])
+        << v;
+    EXPECT_EQ(value("s"), uvw[v].x());
+    EXPECT_EQ(value("t"), uvw[v].y());
+  }
+  EXPECT_EQ(back.faces, s.mesh.faces);
+  EXPECT_FALSE(back.comments.empty());
+}
+
+TEST(WriteMesh, WithoutRestCoordinatesWritesPositionsAndFacesOnly) {
+  const CutSheet s = cut_sheet();
+  const fs::path dir = test_dir();
+  write_mesh(dir / "cut.obj", s.mesh, MeshFormat::obj);
+  const ObjPolygons obj = read_obj(dir / "cut.obj");
+  EXPECT_EQ(obj.positions, s.mesh.vertices);
+  EXPECT_TRUE(obj.texture_coordinates.empty());
+  EXPECT_EQ(obj.faces, s.mesh.faces);
+  write_mesh(dir / "cut.ply", s.mesh, MeshFormat::ply);
+  const test::WrittenPly ply = test::read_written_ply(dir / "cut.ply");
+  EXPECT_EQ(ply.vertex_properties, (std::vector<std::string>{"x", "y", "z"}));
+  EXPECT_EQ(ply.faces, s.mesh.faces);
+}
+
+TEST(WriteMesh, WrittenFilesReadBackThroughReadMeshJoiningTheCut) {
+  // what `tissu render` does with a folder of frames
+  const CutSheet s = cut_sheet();
+  const fs::path dir = test_dir();
+  for (MeshFormat format : {MeshFormat::obj, MeshFormat::ply}) {
+    const fs::path file = dir / (std::string("cut.") + extension(format));
+    write_mesh(file, s.mesh, s.rest, format);
+    const IndexedMesh mesh = read_mesh(file);
+    EXPECT_EQ(mesh.vertices.size(), 5u) << file;  // the cut edge's two pairs joined
+    EXPECT_EQ(mesh.faces.size(), 2u) << file;
+  }
+}
+
+TEST(WriteMesh, RestCoordinatesOfTheWrongCountThrowNamingTheFile) {
+  CutSheet s = cut_sheet();
+  s.rest.rest_m.pop_back();
+  const fs::path file = test_dir() / "cut.obj";
+  try {
+    write_mesh(file, s.mesh, s.rest, MeshFormat::obj);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(file.string() + ": cannot write mesh: 6 rest positions for 7"));
+  }
+}
+
+TEST(WriteMesh, FaceOfTwoVerticesThrowsNamingIt) {
+  IndexedMesh mesh = cut_sheet().mesh;
+  mesh.faces[1] = {4, 6};
+  const fs::path file = test_dir() / "cut.ply";
+  try {
+    write_mesh(file, mesh, MeshFormat::ply);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("face 1 has 2 vertices"));
+  }
+}
+
+}  // namespace
+}  // namespace tissu
