@@ -281,12 +281,16 @@ NumberedMesh import_with_assimp(const std::filesystem::path& file) {
   return out;
 }
 
+/// The polygons of `file`, unchecked, with the file's vertex numbering.
+NumberedMesh import_numbered(const std::filesystem::path& file) {
+  check_readable(file);
+  return lowercase_extension(file) == ".obj" ? import_obj(file) : import_with_assimp(file);
+}
+
 }  // namespace
 
 NumberedMesh read_numbered_mesh(const std::filesystem::path& file) {
-  check_readable(file);
-  NumberedMesh out =
-      lowercase_extension(file) == ".obj" ? import_obj(file) : import_with_assimp(file);
+  NumberedMesh out = import_numbered(file);
   try {
     validate_indexed_mesh(out.mesh);
   } catch (const MeshError& e) {
@@ -300,7 +304,7 @@ IndexedMesh read_mesh(const std::filesystem::path& file) {
 }
 
 IndexedMesh read_polygons(const std::filesystem::path& file) {
-  return import_mesh(file);
+  return import_numbered(file).mesh;
 }
 
 }  // namespace tissu
