@@ -239,28 +239,43 @@ TEST(MeshSurface, RefusesWhatCannotBeQueried) {
   EXPECT_THROW(make_mesh_surface(segment), MeshError);
 }
 
-TEST(MeshSurface, ClothAboveAnApexFallsFreelyUntilItTouches) {
-  // a 0.6 m sheet 0.3 m above the pyramid's apex: in the first 0.1 s it falls 5 cm, touching
-  // nothing, so it must move exactly as it does without the obstacle
-  const auto sheet = [](State& state) {
+/// A 0.6 m sheet released 0.3 m above the top of `mesh`, centred over `centre_xy`: in the first
+/// 0.1 s it falls 5 cm, touching nothing, so it must move exactly as it does without the obstacle.
+void expect_free_fall_above(const IndexedMesh& mesh, const Eigen::Vector2d& centre_xy) {
+  double top_z = -1e300;
+  for (const Eigen::Vector3d& v : mesh.vertices) top_z = std::max(top_z, v.z());
+  const auto sheet = [&](State& state) {
     SpringModel model = test::grid_model(13, 13, 0.05, 1e-3, 100.0, 0.0, state);
     for (int p = 0; p < model.particle_count(); ++p) {
-      state.x.segment<3>(3 * p) += Eigen::Vector3d(-0.3, -0.3, 1.3);
+      state.x.segment<3>(3 * p) +=
+          Eigen::Vector3d(centre_xy.x() - 0.3, centre_xy.y() - 0.3, top_z + 0.3);
     }
     return model;
   };
   SolverParams params;
   params.time_step = 1.0 / 30.0;
-  Obstacle apex;
-  apex.shape = ObstacleShape::mesh;
-  apex.surface = make_mesh_surface(pyramid());
+  Obstacle obstacle;
+  obstacle.shape = ObstacleShape::mesh;
+  obstacle.surface = make_mesh_surface(mesh);
   State free_state, state;
   const SpringModel free_model = sheet(free_state), model = sheet(state);
   for (int n = 0; n < 3; ++n) ASSERT_EQ(step(free_model, params, free_state), StepStatus::ok);
-  params.obstacles = {apex};
+  params.obstacles = {obstacle};
   for (int n = 0; n < 3; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
   EXPECT_LT((state.x - free_state.x).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((state.v - free_state.v).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(MeshSurface, ClothAboveSharpFeaturesFallsFreelyUntilItTouches) {
+  expect_free_fall_above(pyramid(), {0.0, 0.0});  // over the apex
+  // over a cube standing on a corner, its diagonal (1, 1, 1) turned to +z
+  IndexedMesh corner_up = cube();
+  const Eigen::Quaterniond turn =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(1, 1, 1), Eigen::Vector3d::UnitZ());
+  for (Eigen::Vector3d& v : corner_up.vertices) v = turn * v;
+  expect_free_fall_above(corner_up, {0.0, 0.0});
+  expect_free_fall_above(corner_up, {0.4, 0.2});        // over an edge running down from the corner
+  expect_free_fall_above(notched_block(), {1.0, 0.5});  // over the notch
 }
 
 TEST(MeshSurface, RefusesAnInvalidMesh) {
