@@ -19,4 +19,10 @@ inline std::filesystem::path fresh_temp_dir(const std::string& name) {
   return dir;
 }
 
+/// An empty folder `group`/<the running test's name>, as fresh_temp_dir makes it.
+inline std::filesystem::path fresh_dir_for_this_test(const std::string& group) {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return fresh_temp_dir(group + "/" + info->name());
+}
+
 }  // namespace tissu::test

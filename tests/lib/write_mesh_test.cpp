@@ -22,8 +22,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 fs::path test_dir() {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return test::fresh_temp_dir(std::string("write_mesh/") + info->name());
+  return test::fresh_dir_for_this_test("write_mesh");
 }
 
 /// Two pieces of a cut sheet, a quad and a triangle, that share the positions of their cut edge
