@@ -260,8 +260,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
                  current_mesh(lcc), output.mesh_format);
     }
-    if (render.enabled && frame % render.every == 0)
+    if (render.enabled && frame % render.every == 0) {
       to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
+      to_render.back().frame = frame;
+    }
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
