@@ -1,6 +1,9 @@
 #include "apps/render_command.hpp"
 
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "lib/progress.hpp"
 #include "lib/render_folder.hpp"
@@ -19,14 +22,60 @@ void add_render_options(CLI::App& app, RenderCommand& command) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_flag("--no-video", command.no_video, "PNG frames only, no MP4 or GIF");
+  // the scenario's render.camera, in the same units; unset, the camera frames the whole run
+  CLI::Option* position =
+      app.add_option("--camera-position", command.camera_position, "camera eye X Y Z (m)")
+          ->expected(3);
+  CLI::Option* target =
+      app.add_option("--camera-target", command.camera_target,
+                     "point X Y Z at the image centre (m); with --camera-position")
+          ->expected(3);
+  position->needs(target);
+  target->needs(position);
+  app.add_option("--camera-up", command.camera_up, "image-up hint X Y Z")
+      ->expected(3)
+      ->needs(position)
+      ->capture_default_str();
+  app.add_option("--camera-fov", command.camera_fov_deg, "vertical field of view (degrees)")
+      ->check(CLI::Range(0.0, 179.0))
+      ->needs(position)
+      ->capture_default_str();
   app.add_flag("-q,--quiet", command.quiet, "no progress output");
 }
+
+namespace {
+
+Eigen::Vector3d vector3(const std::vector<double>& xyz) {
+  return {xyz.at(0), xyz.at(1), xyz.at(2)};
+}
+
+/// The camera the options give, if any; throws std::invalid_argument naming the option when it
+/// is not a usable camera.
+std::optional<Camera> command_camera(const RenderCommand& command) {
+  if (command.camera_position.empty()) return std::nullopt;
+  Camera camera;
+  camera.position = vector3(command.camera_position);
+  camera.target = vector3(command.camera_target);
+  camera.up = vector3(command.camera_up);
+  camera.fov_y_deg = command.camera_fov_deg;
+  try {
+    validate_camera(camera);
+  } catch (const std::invalid_argument& e) {
+    std::string what = e.what();  // "camera: target equals position"
+    if (what.rfind("camera: ", 0) == 0) what.erase(0, 8);
+    throw std::invalid_argument("render: --camera-position, --camera-target, --camera-up: " + what);
+  }
+  return camera;
+}
+
+}  // namespace
 
 int execute(const RenderCommand& command) {
   try {
     RenderSettings settings = command.settings;
     settings.enabled = true;
     settings.video = !command.no_video;
+    settings.camera = command_camera(command);
     validate_render_options(settings.options);
     const std::filesystem::path out =
         command.output_dir.empty() ? command.mesh_dir : command.output_dir;

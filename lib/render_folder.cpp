@@ -7,11 +7,25 @@
 
 namespace tissu {
 
+namespace {
+
+// 5 to 9 digits: every frame number a run writes, and no number std::stoi cannot read
+const std::regex frame_name(R"(frame_(\d{5,9})\.(obj|ply))");
+
+/// The frame number in a frame mesh's file name (frame_00042.obj: 42).
+int frame_number(const std::filesystem::path& file) {
+  std::smatch match;
+  const std::string name = file.filename().string();
+  std::regex_match(name, match, frame_name);
+  return std::stoi(match[1].str());
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> frame_mesh_files(const std::filesystem::path& mesh_dir) {
   if (!std::filesystem::is_directory(mesh_dir)) {
     throw std::runtime_error(mesh_dir.string() + ": not a folder");
   }
-  static const std::regex frame_name(R"(frame_\d{5,}\.(obj|ply))");
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(mesh_dir)) {
     if (std::regex_match(entry.path().filename().string(), frame_name)) {
@@ -22,7 +36,10 @@ std::vector<std::filesystem::path> frame_mesh_files(const std::filesystem::path&
     throw std::runtime_error(mesh_dir.string() +
                              ": no frame meshes (frame_NNNNN.obj or frame_NNNNN.ply) to render");
   }
-  std::sort(files.begin(), files.end());
+  // by frame number: frame_100000 comes after frame_99999
+  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
+    return std::make_pair(frame_number(a), a) < std::make_pair(frame_number(b), b);
+  });
   return files;
 }
 
@@ -33,6 +50,7 @@ RenderedRun render_mesh_folder(const std::filesystem::path& mesh_dir,
   std::vector<RenderFrame> frames;
   for (const std::filesystem::path& file : frame_mesh_files(mesh_dir)) {
     frames.push_back(RenderFrame{read_mesh(file), {}, {}});
+    frames.back().frame = frame_number(file);  // its image is named like its mesh
   }
   std::filesystem::create_directories(output_dir);
   const std::string stem =

@@ -34,6 +34,7 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
   const Camera camera = settings.camera.value_or(framing_camera(bounds_of(frames), aspect));
   Renderer renderer(options);
   const int total = static_cast<int>(frames.size());
+  std::vector<std::filesystem::path> images;
   for (int k = 0; k < total; ++k) {
     RenderScene scene;
     scene.mesh = &frames[k].mesh;
@@ -42,14 +43,15 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
     scene.obstacles = frames[k].obstacles;
     scene.ground_height_m = frames[k].ground_height_m;
     char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", k);
-    write_png(output_dir / name, renderer.render(scene, camera));
+    std::snprintf(name, sizeof name, "frame_%05d.png", frames[k].frame);
+    images.push_back(output_dir / name);
+    write_png(images.back(), renderer.render(scene, camera));
     run.images = k + 1;
     if (on_image) on_image(k + 1, total);
   }
   if (settings.video) {
     const VideoResult video =
-        encode_video(output_dir, images_per_second, output_dir / (video_stem + ".mp4"),
+        encode_video(images, images_per_second, output_dir / (video_stem + ".mp4"),
                      output_dir / (video_stem + ".gif"));
     run.video = video.made;
     run.video_warning = video.warning;

@@ -21,18 +21,20 @@ struct RenderFrame {
   // the two below are brace-initialised so that frames listed without them stay -Wextra clean
   std::vector<IndexedMesh> obstacles{};     ///< closed meshes, where they are at the frame's time
   std::optional<double> ground_height_m{};  ///< height (z, m) of a floor plane, if any
+  int frame{0};  ///< the frame of the run it shows, which names its image: frame_NNNNN.png
 };
 
 struct RenderedRun {
-  int images = 0;             ///< PNG files written: frame_00000.png ...
+  int images = 0;             ///< PNG files written, frame_NNNNN.png named by RenderFrame::frame
   bool video = false;         ///< whether the MP4 and GIF were made
   std::string video_warning;  ///< why not, when video was asked for but not made
 };
 
-/// Writes frames[k] to output_dir/frame_k.png (5 digits) with settings.camera, or a camera that
-/// frames the bounding box of every frame's cloth (not its obstacles), then, if settings.video,
-/// output_dir/<video_stem>.mp4 and .gif at `images_per_second`. Calls on_image(done, total) after
-/// each image.
+/// Writes each of `frames` to output_dir/frame_NNNNN.png, NNNNN its RenderFrame::frame (5 digits
+/// or more), with settings.camera, or a camera that frames the bounding box of every frame's cloth
+/// (not its obstacles), then, if settings.video, output_dir/<video_stem>.mp4 and .gif of those
+/// images in the order given, at `images_per_second`. Calls on_image(done, total) after each
+/// image.
 RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
                           double images_per_second, const std::filesystem::path& output_dir,
                           const std::string& video_stem,

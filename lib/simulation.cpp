@@ -10,6 +10,7 @@
 #include "lib/render_frames.hpp"
 #include "lib/tear_step.hpp"
 #include "solver/energy.hpp"
+#include "solver/speed_limit.hpp"
 #include "solver/step.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
@@ -105,25 +106,56 @@ Adaptation adapt(ClothComplex& lcc, const AdaptiveSettings& adaptive,
   return changes;
 }
 
-/// A step whose positions or velocities stopped being finite.
+/// The first step of a run that went wrong: its positions or velocities stopped being finite, or a
+/// particle moves faster than the scene can make it (solver/speed_limit.hpp).
 struct Divergence {
   int substep = 0;      ///< 1-based, within the frame
   double time_s = 0.0;  ///< at the end of that step
-  StepStatus status = StepStatus::non_finite;
+  std::string cause;    ///< what was wrong, in words
 };
 
-/// Stage 1 of a frame: the solver's substeps, with tearing after each one. Stops at the first
-/// step that diverges; the complex then still holds the last good state (the previous frame's, or
-/// that of the last step that tore the cloth in this frame).
+/// `value` with 3 significant digits, then `unit`.
+std::string number_text(double value, const char* unit) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.3g%s", value, unit);
+  return text;
+}
+
+/// What was wrong with the state a step left, if anything: non-finite values, or a free particle
+/// over the speed limit.
+std::optional<std::string> divergence_cause(StepStatus status, const CompiledCloth& cloth,
+                                            const SpeedLimit& limit) {
+  if (status == StepStatus::non_finite) return std::string("non-finite positions or velocities");
+  const std::optional<Overspeed> over = find_overspeed(limit, cloth.model, cloth.state);
+  if (!over) return std::nullopt;
+  return "particle " + std::to_string(over->particle) + " moves at " +
+         number_text(over->speed_m_per_s, " m/s") + ", over the " +
+         number_text(over->limit_m_per_s, " m/s") + " no particle of this scene can reach (" +
+         number_text(limit.margin, "") +
+         " x what gravity, handles, obstacles, wind and elastic release can give by then)";
+}
+
+/// Stage 1 of a frame: the solver's substeps, with tearing after each one (which widens the speed
+/// limit by the recoil of the stretch it released). Stops at the first step that diverges
+/// (divergence_cause()); `cloth` then holds the state before that step (kept
+/// in `before_step`), on the model it was stepped with, while the complex still holds the
+/// previous frame's state or that of the last step that tore the cloth in this frame.
 std::optional<Divergence> step_frame(const Scenario& scenario, ClothComplex& lcc,
                                      CompiledCloth& cloth, StepWorkspace& workspace,
-                                     TearStep& tearing, FrameSteps& steps) {
+                                     TearStep& tearing, SpeedLimit& limit, State& before_step,
+                                     FrameSteps& steps) {
   const auto start = std::chrono::steady_clock::now();
   for (int sub = 0; sub < scenario.substeps; ++sub) {
+    before_step = cloth.state;
     const StepStatus status = step(cloth.model, scenario.solver, cloth.state, workspace);
     steps.add(status, workspace);
-    if (status == StepStatus::non_finite) return Divergence{sub + 1, cloth.state.time, status};
+    if (auto cause = divergence_cause(status, cloth, limit)) {
+      const double time_s = cloth.state.time;
+      cloth.state = before_step;
+      return Divergence{sub + 1, time_s, std::move(*cause)};
+    }
     const TearReport torn = tearing.after_step(lcc, cloth);
+    if (torn.tears > 0) widen_for_release(limit, cloth.model, cloth.state);  // the lips recoil
     steps.tears += torn.tears;
     steps.tip_splits += torn.tip_refinements;
   }
@@ -147,14 +179,27 @@ Adaptation adapt_frame(const Scenario& scenario, int frame, ClothComplex& lcc,
 }
 
 std::string divergence_message(const Scenario& scenario, int frame, const Divergence& divergence,
-                               const std::filesystem::path& last_good) {
+                               const CompiledCloth& last_good,
+                               const std::filesystem::path& last_good_file) {
+  const std::string energy = number_text(kinetic_energy(last_good.model, last_good.state), " J");
   return "frame " + std::to_string(frame) + ", step " + std::to_string(divergence.substep) +
          " of " + std::to_string(scenario.substeps) + " (t = " + std::to_string(divergence.time_s) +
-         " s): " + to_string(divergence.status) + " positions or velocities; the time step " +
+         " s): " + divergence.cause + "; the time step " +
          std::to_string(scenario.solver.time_step) +
          " s is likely too large for the stiffness (more substeps or the implicit_euler "
-         "integrator help); last good state written to " +
-         last_good.string();
+         "integrator help); the state before that step (t = " +
+         std::to_string(last_good.state.time) + " s, kinetic energy " + energy + ") written to " +
+         last_good_file.string();
+}
+
+/// Where the state before the step that diverged goes: last_good_frame_NNNNN.<ext> when it is the
+/// previous frame's, last_good_frame_NNNNN_step_SS.<ext> when it is SS steps after frame NNNNN.
+std::filesystem::path last_good_file(const std::filesystem::path& dir, int frame, int substep,
+                                     MeshFormat format) {
+  if (substep == 1) return frame_file(dir, "last_good_frame_", frame - 1, format);
+  char stem[48];
+  std::snprintf(stem, sizeof stem, "last_good_frame_%05d_step_%02d.", frame - 1, substep - 1);
+  return dir / (std::string(stem) + extension(format));
 }
 
 /// What to do about steps that missed their tolerance, for the warning of the first such frame.
@@ -216,8 +261,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
                  current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
                  output.mesh_format);
     }
-    if (render.enabled && frame % render.every == 0)
+    if (render.enabled && frame % render.every == 0) {
       to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
+      to_render.back().frame = frame;
+    }
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
@@ -226,15 +273,19 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   RunResult result;
   StepWorkspace workspace;
   TearStep tearing(scenario);
+  SpeedLimit limit = speed_limit_at_start(cloth.model, scenario.solver, cloth.state);
+  State before_step;
   for (int frame = 1; frame <= frame_count; ++frame) {
     FrameSteps steps;
-    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, tearing, steps)) {
+    if (const auto divergence =
+            step_frame(scenario, lcc, cloth, workspace, tearing, limit, before_step, steps)) {
+      write_back(cloth, cloth.state, lcc);  // the state before the step that diverged
       const auto last_good =
-          frame_file(options.output_dir, "last_good_frame_", frame - 1, output.mesh_format);
+          last_good_file(options.output_dir, frame, divergence->substep, output.mesh_format);
       write_mesh(last_good, current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
                  output.mesh_format);
       result.ok = false;
-      result.failure = divergence_message(scenario, frame, *divergence, last_good);
+      result.failure = divergence_message(scenario, frame, *divergence, cloth, last_good);
       render_recorded(result);
       return result;
     }

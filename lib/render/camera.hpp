@@ -25,8 +25,11 @@ void validate_camera(const Camera& camera);
 /// of `bounds`, moved back just far enough that the 8 corners of `bounds`, grown by 8 % around
 /// its centre, fit in an image of width/height `aspect`. Throws std::invalid_argument for an
 /// empty box, a non-positive aspect, or a view direction that is zero or parallel to `up`.
+/// The default view looks along +y from 17 degrees above the horizontal: a cloth hanging in the
+/// x-z plane (every shipped hanging scenario: u = x, v = z, whose front u x v faces -y) is seen
+/// from the front, left and right symmetric, and a horizontal one (the drape) not edge-on.
 Camera framing_camera(const Eigen::AlignedBox3d& bounds, double aspect,
-                      Eigen::Vector3d view_direction = {0.3, 1.0, -0.3},
+                      Eigen::Vector3d view_direction = {0.0, 1.0, -0.3},
                       Eigen::Vector3d up = {0.0, 0.0, 1.0}, double fov_y_deg = 40.0);
 
 /// The world-to-eye transform (OpenGL convention: the eye looks down -z, y is image up).

@@ -1,6 +1,9 @@
 #include "lib/render/video.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -20,30 +23,69 @@ std::string rate_text(double frame_rate) {
   return out.str();
 }
 
+/// A temporary folder holding image_00000.png, image_00001.png, ... linked (or, where links
+/// cannot be made, copied) to given images, for ffmpeg's image2 reader, which needs consecutive
+/// numbers; removed with the object.
+class NumberedImages {
+ public:
+  /// Throws std::filesystem::filesystem_error when the folder or a copy cannot be made.
+  explicit NumberedImages(const std::vector<fs::path>& images) {
+    static int made = 0;  // one folder per call of this process
+    m_dir = fs::temp_directory_path() /
+            ("tissu_video_" + std::to_string(getpid()) + "_" + std::to_string(made++));
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "image_%05zu.png", k);
+      std::error_code error;
+      fs::create_symlink(fs::absolute(images[k]), m_dir / name, error);
+      if (error) fs::copy_file(images[k], m_dir / name);
+    }
+  }
+  ~NumberedImages() {
+    std::error_code ignored;
+    fs::remove_all(m_dir, ignored);
+  }
+  NumberedImages(const NumberedImages&) = delete;
+  NumberedImages& operator=(const NumberedImages&) = delete;
+
+  /// The image2 pattern of the links.
+  std::string pattern() const { return (m_dir / "image_%05d.png").string(); }
+
+ private:
+  fs::path m_dir;
+};
+
 }  // namespace
 
-VideoResult encode_video(const fs::path& frames_dir, double frame_rate, const fs::path& mp4,
-                         const fs::path& gif) {
+VideoResult encode_video(const std::vector<fs::path>& frames, double frame_rate,
+                         const fs::path& mp4, const fs::path& gif) {
   if (!(frame_rate > 0.0) || !std::isfinite(frame_rate))
     throw std::invalid_argument("encode_video: frame rate must be positive, got " +
                                 rate_text(frame_rate));
   if (mp4.empty() && gif.empty()) return {true, ""};
+  if (frames.empty()) return {false, "no video made: no images to encode"};
   const std::optional<fs::path> ffmpeg = find_on_path("ffmpeg");
-  if (!ffmpeg)
-    return {false, "ffmpeg not found on PATH: no video made; frames are in " + frames_dir.string()};
-  std::error_code error;
-  if (!fs::is_regular_file(frames_dir / "frame_00000.png", error))
-    return {false, "no video made: " + frames_dir.string() + " has no frame_00000.png"};
+  if (!ffmpeg) {
+    return {false, "ffmpeg not found on PATH: no video made; frames are in " +
+                       frames.front().parent_path().string()};
+  }
+  for (const fs::path& frame : frames) {
+    std::error_code error;
+    if (!fs::is_regular_file(frame, error))
+      return {false, "no video made: " + frame.string() + " is not a file"};
+  }
+  std::optional<NumberedImages> numbered;
+  try {
+    numbered.emplace(frames);
+  } catch (const fs::filesystem_error& e) {
+    return {false, std::string("no video made: cannot number the images for ffmpeg: ") + e.what()};
+  }
 
-  const std::vector<std::string> input = {"-hide_banner",
-                                          "-nostdin",
-                                          "-loglevel",
-                                          "error",
-                                          "-y",
-                                          "-framerate",
-                                          rate_text(frame_rate),
-                                          "-i",
-                                          (frames_dir / "frame_%05d.png").string()};
+  const std::vector<std::string> input = {
+      "-hide_banner",        "-nostdin", "-loglevel",        "error", "-y", "-framerate",
+      rate_text(frame_rate), "-i",       numbered->pattern()};
   std::vector<std::string> warnings;
   const auto encode = [&](const fs::path& output, const char* what,
                           const std::vector<std::string>& options) {

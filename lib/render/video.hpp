@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace tissu {
 
@@ -13,14 +14,16 @@ struct VideoResult {
   std::string warning;  ///< one line saying what was not made and why; empty when made
 };
 
-/// Encodes `frames_dir`/frame_00000.png, frame_00001.png, ... shown at `frame_rate` frames per
-/// second into `mp4` (H.264, yuv420p, so any player reads it) and `gif` (at most 320 pixels
-/// wide, at most 15 frames per second, own palette, looping forever), running the first `ffmpeg`
-/// found on the PATH with stdin from /dev/null. An empty path skips that file. Without ffmpeg,
-/// without frame_00000.png, or when ffmpeg fails, returns made = false and a warning (naming the
-/// end of ffmpeg's error output when it failed). Throws std::invalid_argument only for a frame
-/// rate that is not positive.
-VideoResult encode_video(const std::filesystem::path& frames_dir, double frame_rate,
+/// Encodes the PNG images `frames`, in that order, shown at `frame_rate` images per second, into
+/// `mp4` (H.264, yuv420p, so any player reads it) and `gif` (at most 320 pixels wide, at most 15
+/// frames per second, own palette, looping forever), running the first `ffmpeg` found on the PATH
+/// with stdin from /dev/null. The images may be named anything (frame_00000.png, frame_00005.png,
+/// ... when every 5th frame was rendered): ffmpeg reads them through consecutively numbered links
+/// in a temporary folder, removed afterwards, and nothing else in their folder is read. An empty
+/// path skips that file. Without ffmpeg, without images, when one is missing, or when ffmpeg
+/// fails, returns made = false and a warning (naming the end of ffmpeg's error output when it
+/// failed). Throws std::invalid_argument only for a frame rate that is not positive.
+VideoResult encode_video(const std::vector<std::filesystem::path>& frames, double frame_rate,
                          const std::filesystem::path& mp4, const std::filesystem::path& gif);
 
 }  // namespace tissu

