@@ -61,24 +61,23 @@ ObstacleTriangles obstacle_triangles(const IndexedMesh& mesh, ObstacleMeshReport
                         ", but the mesh has " + std::to_string(vertex_count) + " vertices");
       }
     }
+    int kept = 0, duplicates = 0;
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
       std::array<int, 3> t{face[0], face[k], face[k + 1]};
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-        ++report.degenerate_faces;  // an edge traversed both ways: nothing to the boundary
-        continue;
-      }
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;  // nothing to the boundary
       std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
       if (!seen.insert(t).second) {
-        ++report.duplicate_faces;
-        continue;
-      }
-      if (has_zero_area(mesh, t)) {
-        ++report.degenerate_faces;
+        ++duplicates;
+      } else if (has_zero_area(mesh, t)) {
         triangles.flat.push_back(t);
       } else {
         triangles.kept.push_back(t);
+        ++kept;
       }
     }
+    // a face counts as dropped when none of its triangles is kept (a fan across a straight
+    // angle has a flat triangle, but the face itself is fine)
+    if (kept == 0) ++(duplicates > 0 ? report.duplicate_faces : report.degenerate_faces);
   }
   if (triangles.kept.empty()) {
     throw MeshError("all " + std::to_string(mesh.faces.size()) +

@@ -14,7 +14,7 @@ namespace tissu {
 struct ObstacleMeshReport {
   int triangles = 0;         ///< kept, after cutting polygons into fans
   int duplicate_faces = 0;   ///< dropped: the same vertices in the same cyclic order as another
-  int degenerate_faces = 0;  ///< dropped: a repeated vertex or zero area
+  int degenerate_faces = 0;  ///< dropped: only repeated vertices or zero area
   bool closed = false;       ///< every directed edge matched by its reverse: inside is defined
 };
 
