@@ -1,6 +1,7 @@
-// Linked into every test program. Under -DTISSU_SANITIZE=ON: Mesa's OSMesa keeps a few hundred
-// bytes per context it made (allocated in OSMesaMakeCurrent) until the process ends; they are not
-// tissu's leaks, and any test that renders would otherwise fail LeakSanitizer.
+// Linked into every test program, and into the programs in sanitizer builds (apps/). Under
+// -DTISSU_SANITIZE=ON: Mesa's OSMesa keeps a few hundred bytes per context it made (allocated in
+// OSMesaMakeCurrent) until the process ends; they are not tissu's leaks, and any test that renders
+// would otherwise fail LeakSanitizer.
 extern "C" const char* __lsan_default_suppressions() {
   return "leak:libOSMesa.so\n";
 }
