@@ -11,6 +11,7 @@
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
 #include "tests/test_temp_dir.hpp"
+#include "tests/video_probe.hpp"
 
 namespace tissu {
 namespace {
@@ -84,20 +85,6 @@ bool ffmpeg_installed() {
          0;
 }
 
-/// The number of video frames ffprobe counts in `video`, -1 if it cannot tell.
-int video_frame_count(const std::filesystem::path& video) {
-  const std::string command =
-      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
-      "-of csv=p=0 '" +
-      video.string() + "'";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  int count = -1;
-  if (std::fscanf(pipe, "%d", &count) != 1) count = -1;
-  pclose(pipe);
-  return count;
-}
-
 TEST(RenderRun, EveryNthFrameStillMakesAVideoOfAllItsImages) {
   if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg or ffprobe is not installed";
   const Scenario scenario = parse_scenario(small_cloth, "gaps.json",
@@ -108,7 +95,7 @@ TEST(RenderRun, EveryNthFrameStillMakesAVideoOfAllItsImages) {
   ASSERT_TRUE(result.ok) << result.failure;
   EXPECT_EQ(result.video_warning, "");
   EXPECT_TRUE(std::filesystem::exists(options.output_dir / "frame_00004.png"));
-  EXPECT_EQ(video_frame_count(options.output_dir / "gaps.mp4"), 3);  // frames 0, 2 and 4
+  EXPECT_EQ(test::video_frame_count(options.output_dir / "gaps.mp4"), 3);  // frames 0, 2 and 4
 }
 
 TEST(RenderRun, RenderingIsOffByDefault) {

@@ -12,6 +12,7 @@
 
 #include "lib/render/image.hpp"
 #include "tests/test_temp_dir.hpp"
+#include "tests/video_probe.hpp"
 
 namespace tissu {
 namespace {
@@ -20,7 +21,9 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 /// A fresh directory for the running test.
-fs::path test_dir() { return test::fresh_dir_for_this_test("video"); }
+fs::path test_dir() {
+  return test::fresh_dir_for_this_test("video");
+}
 
 /// Writes `count` 64 x 48 frames of a square moving right into `dir`, numbered 0, every,
 /// 2 every, ...; returns their paths.
@@ -102,20 +105,6 @@ TEST(EncodeVideo, WarnsWhenThereAreNoFrames) {
   EXPECT_THAT(missing.warning, HasSubstr("frame_00000.png is not a file"));
 }
 
-/// The number of video frames ffprobe counts in `video`, -1 if it cannot tell.
-int video_frame_count(const fs::path& video) {
-  const std::string command =
-      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
-      "-of csv=p=0 '" +
-      video.string() + "'";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  int count = -1;
-  if (std::fscanf(pipe, "%d", &count) != 1) count = -1;
-  pclose(pipe);
-  return count;
-}
-
 TEST(EncodeVideo, EncodesImagesNumberedWithGapsAndOnlyThose) {
   // every 5th frame rendered (frame_00000, frame_00005, ...) beside a stray image of an older run
   if (!ffmpeg_installed() || std::system("command -v ffprobe > /dev/null 2>&1") != 0)
@@ -127,7 +116,7 @@ TEST(EncodeVideo, EncodesImagesNumberedWithGapsAndOnlyThose) {
   fs::copy_file(dir / "older" / "frame_00000.png", dir / "frame_00001.png");
   const VideoResult result = encode_video(frames, 10.0, dir / "clip.mp4", "");
   ASSERT_TRUE(result.made) << result.warning;
-  EXPECT_EQ(video_frame_count(dir / "clip.mp4"), 6);
+  EXPECT_EQ(test::video_frame_count(dir / "clip.mp4"), 6);
 }
 
 TEST(EncodeVideo, ReportsTheErrorOutputOfAFailingFfmpeg) {
