@@ -19,21 +19,7 @@ constexpr double stretch_m = 0.1;
 
 // one mass on one spring (rest length 1 m) whose other end is pinned, stretched by `stretch_m`
 SpringModel stretched_spring(State& state) {
-  SpringModel model;
-  model.mass = Eigen::Vector2d(1.0, mass_kg);
-  model.pinned = {1, 0};
-  model.springs.resize(1, 2);
-  model.springs << 0, 1;
-  model.rest_length = Eigen::VectorXd::Constant(1, 1.0);
-  model.stiffness = Eigen::VectorXd::Constant(1, stiffness_n_per_m);
-  model.damping = Eigen::VectorXd::Zero(1);
-  model.kind = {SpringKind::structural};
-  model.triangles.resize(0, 3);
-  finalize_model(model);
-  state.x = Eigen::VectorXd::Zero(6);
-  state.x[3] = 1.0 + stretch_m;
-  state.v = Eigen::VectorXd::Zero(6);
-  return model;
+  return test::spring_mass(mass_kg, stiffness_n_per_m, 1.0, stretch_m, state);
 }
 
 double fastest_free_speed(const SpringModel& model, const State& state) {

@@ -27,6 +27,28 @@ inline SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d
   return model;
 }
 
+/// A mass of `mass_kg` on one spring of stiffness `stiffness_n_per_m` and rest length
+/// `rest_length_m` along x, whose other end (particle 0, 1 kg) is pinned at the origin, undamped,
+/// stretched by `stretch_m` and at rest. No triangles.
+inline SpringModel spring_mass(double mass_kg, double stiffness_n_per_m, double rest_length_m,
+                               double stretch_m, State& state) {
+  SpringModel model;
+  model.mass = Eigen::Vector2d(1.0, mass_kg);
+  model.pinned = {1, 0};
+  model.springs.resize(1, 2);
+  model.springs << 0, 1;
+  model.rest_length = Eigen::VectorXd::Constant(1, rest_length_m);
+  model.stiffness = Eigen::VectorXd::Constant(1, stiffness_n_per_m);
+  model.damping = Eigen::VectorXd::Zero(1);
+  model.kind = {SpringKind::structural};
+  model.triangles.resize(0, 3);
+  finalize_model(model);
+  state.x = Eigen::VectorXd::Zero(6);
+  state.x[3] = rest_length_m + stretch_m;
+  state.v = Eigen::VectorXd::Zero(6);
+  return model;
+}
+
 /// `particles` particles scattered in the unit cube, `springs` springs between random distinct
 /// pairs with rest lengths 0.7 to 1.3 times their current length (some stretched, some
 /// compressed), random stiffness, damping and masses, and `triangles` random triangles. Fills x

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solver/step.hpp"
+#include "tests/solver/test_models.hpp"
 
 namespace tissu {
 
@@ -28,40 +29,32 @@ constexpr double rest_length_m = 1.0;
 constexpr double amplitude_m = 0.1;
 
 SpringModel oscillator(State& state) {
-  SpringModel model;
-  model.mass = Eigen::Vector2d(1.0, mass_kg);
-  model.pinned = {1, 0};
-  model.springs.resize(1, 2);
-  model.springs << 0, 1;
-  model.rest_length = Eigen::VectorXd::Constant(1, rest_length_m);
-  model.stiffness = Eigen::VectorXd::Constant(1, stiffness_npm);
-  model.damping = Eigen::VectorXd::Zero(1);
-  model.kind = {SpringKind::structural};
-  model.triangles.resize(0, 3);
-  finalize_model(model);
-  state.x = Eigen::VectorXd::Zero(6);
-  state.x[3] = rest_length_m + amplitude_m;
-  state.v = Eigen::VectorXd::Zero(6);
-  return model;
+  return test::spring_mass(mass_kg, stiffness_npm, rest_length_m, amplitude_m, state);
 }
 
-// mean time between upward zero crossings of the elongation, over several periods (s)
-double measured_period(Integrator integrator, double time_step_s, int periods) {
+// The oscillator stepped `steps` times with `params`: the mean time between upward zero
+// crossings of its elongation (s; 0 with fewer than two crossings), and how its steps ended
+struct OscillatorRun {
+  double period_s = 0.0;
+  int crossings = 0;
+  int steps = 0;
+  int unconverged = 0;  ///< steps that said not_converged
+  int non_finite = 0;   ///< steps that said non_finite
+};
+
+OscillatorRun run_oscillator(const SolverParams& params, int steps) {
   State state;
   const SpringModel model = oscillator(state);
-  SolverParams params;
-  params.integrator = integrator;
-  params.time_step = time_step_s;
-  params.environment.gravity.setZero();
-  params.implicit.cg_tolerance = 1e-12;
   StepWorkspace workspace;
-  const double exact = 2.0 * std::numbers::pi * std::sqrt(mass_kg / stiffness_npm);
-  const int steps = static_cast<int>((periods + 0.5) * exact / time_step_s);
+  OscillatorRun run;
+  run.steps = steps;
   std::vector<double> crossings;
   double previous = state.x[3] - rest_length_m;
   for (int n = 0; n < steps; ++n) {
     const double previous_time = state.time;
-    EXPECT_EQ(step(model, params, state, workspace), StepStatus::ok);
+    const StepStatus status = step(model, params, state, workspace);
+    run.unconverged += status == StepStatus::not_converged;
+    run.non_finite += status == StepStatus::non_finite;
     const double elongation = state.x[3] - rest_length_m;
     if (previous < 0.0 && elongation >= 0.0) {
       const double fraction = -previous / (elongation - previous);
@@ -69,9 +62,25 @@ double measured_period(Integrator integrator, double time_step_s, int periods) {
     }
     previous = elongation;
   }
-  EXPECT_GE(crossings.size(), static_cast<std::size_t>(periods - 1));
-  if (crossings.size() < 2) return 0.0;
-  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  run.crossings = static_cast<int>(crossings.size());
+  if (crossings.size() >= 2)
+    run.period_s = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+  return run;
+}
+
+// mean time between upward zero crossings of the elongation, over several periods (s)
+double measured_period(Integrator integrator, double time_step_s, int periods) {
+  SolverParams params;
+  params.integrator = integrator;
+  params.time_step = time_step_s;
+  params.environment.gravity.setZero();
+  params.implicit.cg_tolerance = 1e-12;
+  const double exact = 2.0 * std::numbers::pi * std::sqrt(mass_kg / stiffness_npm);
+  const OscillatorRun run =
+      run_oscillator(params, static_cast<int>((periods + 0.5) * exact / time_step_s));
+  EXPECT_EQ(run.unconverged + run.non_finite, 0);  // every step ok
+  EXPECT_GE(run.crossings, periods - 1);
+  return run.period_s;
 }
 
 class OscillatorPeriod : public testing::TestWithParam<Integrator> {};
@@ -90,42 +99,16 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, OscillatorPeriod,
                            return std::string(to_string(info.param));
                          });
 
-// Projective Dynamics with a global solver, default options otherwise: its period (s) and how
-// many of its steps said not_converged
-struct PdRun {
-  double period_s = 0.0;
-  int steps = 0;
-  int unconverged = 0;
-};
-
-PdRun pd_oscillator(PdGlobalSolver solver, double time_step_s) {
-  State state;
-  const SpringModel model = oscillator(state);
+// Projective Dynamics with a global solver, default options otherwise, over 4.5 periods
+OscillatorRun pd_oscillator(PdGlobalSolver solver, double time_step_s) {
   SolverParams params;
   params.integrator = Integrator::projective_dynamics;
   params.pd.global_solver = solver;
   params.time_step = time_step_s;
   params.environment.gravity.setZero();
-  StepWorkspace workspace;
   const double exact = 2.0 * std::numbers::pi * std::sqrt(mass_kg / stiffness_npm);
-  PdRun run;
-  run.steps = static_cast<int>(4.5 * exact / time_step_s);
-  std::vector<double> crossings;
-  double previous = state.x[3] - rest_length_m;
-  for (int n = 0; n < run.steps; ++n) {
-    const double previous_time = state.time;
-    const StepStatus status = step(model, params, state, workspace);
-    EXPECT_NE(status, StepStatus::non_finite);
-    run.unconverged += status == StepStatus::not_converged;
-    const double elongation = state.x[3] - rest_length_m;
-    if (previous < 0.0 && elongation >= 0.0) {
-      const double fraction = -previous / (elongation - previous);
-      crossings.push_back(previous_time + fraction * (state.time - previous_time));
-    }
-    previous = elongation;
-  }
-  if (crossings.size() >= 2)
-    run.period_s = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+  const OscillatorRun run = run_oscillator(params, static_cast<int>(4.5 * exact / time_step_s));
+  EXPECT_EQ(run.non_finite, 0);
   return run;
 }
 
@@ -134,12 +117,12 @@ TEST(OscillatorPeriod, ProjectiveDynamicsStepsAreOkExactlyWhenTheirPeriodIsTheDi
   // leaves 4 % of the spring's pull out of each step: a 1.9 % shorter period, which its status
   // must own up to; the other global solvers solve this system exactly
   for (const double h : {1e-4, 1e-3}) {
-    const PdRun direct = pd_oscillator(PdGlobalSolver::direct, h);
+    const OscillatorRun direct = pd_oscillator(PdGlobalSolver::direct, h);
     ASSERT_EQ(direct.unconverged, 0);
     for (const PdGlobalSolver solver :
          {PdGlobalSolver::jacobi, PdGlobalSolver::chebyshev, PdGlobalSolver::gauss_seidel,
           PdGlobalSolver::colored_gauss_seidel, PdGlobalSolver::block_gauss_seidel}) {
-      const PdRun run = pd_oscillator(solver, h);
+      const OscillatorRun run = pd_oscillator(solver, h);
       const double gap = std::abs(run.period_s / direct.period_s - 1.0);
       if (solver == PdGlobalSolver::chebyshev) {
         EXPECT_GT(gap, 0.01) << "h " << h;
