@@ -1,8 +1,8 @@
 // Mesh obstacle queries: signed distance of points near a closed triangle mesh, and what the
 // winding-number inside test adds to the AABB tree's closest-point query.
 //
-// ./build/release/bench/obstacle_bench --benchmark_repetitions=5 \
-//     --benchmark_report_aggregates_only=true
+//   ./build/release/bench/obstacle_bench --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true   (one command line)
 
 #include <benchmark/benchmark.h>
 

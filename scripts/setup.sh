@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs tissu's build and test dependencies from Debian bookworm's packages (run as root).
-# Does nothing when they are already installed.
+# Does nothing when they are already installed. With --fuzz, also clang and its libFuzzer runtime
+# (scripts/fuzz.sh).
 set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
@@ -9,6 +10,9 @@ packages=(
   libosmesa6-dev libstb-dev ffmpeg
   gnuplot-nox # plots in docs/ (scripts/plot_pd_accuracy.sh)
 )
+if [[ "${1:-}" == "--fuzz" ]]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

@@ -13,7 +13,8 @@ namespace tissu {
 /// particle keeps its mesh vertex id as source_index; vertices no face uses are left out. Rest
 /// areas, masses and springs are then assigned (rest_geometry.hpp, mass_lumping.hpp,
 /// spring_assignment.hpp).
-/// Throws MeshError when validate_indexed_mesh rejects the mesh.
+/// Throws MeshError when validate_indexed_mesh rejects the mesh, or when the built complex fails
+/// validity_problems (validity.hpp), checked in every build type.
 void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2,
                          const SpringSettings& springs, ClothComplex& lcc);
 

@@ -158,6 +158,81 @@ void check_edges(const IndexedMesh& mesh) {
   }
 }
 
+/// Union-find over face corners: which corners of a vertex are joined across shared edges.
+class CornerSets {
+ public:
+  explicit CornerSets(std::size_t count) : m_parent(count) {
+    for (std::size_t i = 0; i < count; ++i) m_parent[i] = i;
+  }
+  std::size_t root(std::size_t c) {
+    while (m_parent[c] != c) c = m_parent[c] = m_parent[m_parent[c]];
+    return c;
+  }
+  void join(std::size_t a, std::size_t b) { m_parent[root(a)] = root(b); }
+
+ private:
+  std::vector<std::size_t> m_parent;
+};
+
+/// Every vertex's faces form one fan (edge-connected around it): a "bow-tie" vertex, where two
+/// fans touch at a point, would be one particle the complex cannot hold, its faces split between
+/// two vertices of the complex that no edge joins. Call after check_edges.
+void check_vertex_fans(const IndexedMesh& mesh) {
+  // corner (f, i) is face f's i-th vertex; corners get consecutive ids face after face
+  std::vector<std::size_t> first_corner(mesh.faces.size() + 1, 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    first_corner[f + 1] = first_corner[f] + mesh.faces[f].size();
+  }
+  // each directed edge a->b of a face: its corner at a and the corner at b
+  struct DirectedEdge {
+    int from, to;
+    std::size_t from_corner, to_corner;
+  };
+  std::vector<DirectedEdge> edges;
+  edges.reserve(first_corner.back());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const std::size_t j = (i + 1) % face.size();
+      edges.push_back({face[i], face[j], first_corner[f] + i, first_corner[f] + j});
+    }
+  }
+  const auto key = [](int from, int to) { return std::make_pair(from, to); };
+  std::sort(edges.begin(), edges.end(), [&](const DirectedEdge& x, const DirectedEdge& y) {
+    return key(x.from, x.to) < key(y.from, y.to);
+  });
+  // faces sharing edge a-b (a->b in one, b->a in the other) meet at a and at b
+  CornerSets fans(first_corner.back());
+  for (const DirectedEdge& e : edges) {
+    const auto twin = std::lower_bound(
+        edges.begin(), edges.end(), key(e.to, e.from),
+        [&](const DirectedEdge& x, const std::pair<int, int>& k) { return key(x.from, x.to) < k; });
+    if (twin == edges.end() || twin->from != e.to || twin->to != e.from) continue;
+    fans.join(e.from_corner, twin->to_corner);
+    fans.join(e.to_corner, twin->from_corner);
+  }
+  std::vector<std::size_t> fan_of_vertex(mesh.vertices.size(), first_corner.back());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const std::size_t fan = fans.root(first_corner[f] + i);
+      std::size_t& known = fan_of_vertex[face[i]];
+      if (known == first_corner.back()) {
+        known = fan;
+      } else if (known != fan) {
+        std::ostringstream message;
+        const Eigen::Vector3d& p = mesh.vertices[face[i]];
+        message << "non-manifold vertex " << face[i] << " at (" << p.x() << ", " << p.y() << ", "
+                << p.z() << "): its faces form separate fans that touch only at this vertex (face "
+                << f
+                << " is not connected to the others through edges), but a cloth vertex must be "
+                << "surrounded by one fan of faces; give each fan its own vertex";
+        fail(message);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void validate_indexed_mesh(const IndexedMesh& mesh) {
@@ -167,6 +242,7 @@ void validate_indexed_mesh(const IndexedMesh& mesh) {
     check_face(mesh, f, min_area);
   }
   check_edges(mesh);
+  check_vertex_fans(mesh);
 }
 
 IndexedMesh triangulate_quads(const IndexedMesh& mesh) {

@@ -24,7 +24,8 @@ class MeshError : public std::runtime_error {
 /// Checks that `mesh` can become a cloth complex: not empty, finite coordinates, faces of 3 or 4
 /// vertex ids in range and distinct, no degenerate (zero-area) face, every edge shared by at most
 /// two faces (manifold) and traversed in opposite directions by those two (consistent
-/// orientation). Throws MeshError naming the first offending vertex, face or edge.
+/// orientation), every vertex surrounded by a single fan of faces (no "bow-tie" vertex where
+/// two fans touch at a point). Throws MeshError naming the first offending vertex, face or edge.
 void validate_indexed_mesh(const IndexedMesh& mesh);
 
 /// `mesh` with each quad cut into two triangles along its shorter diagonal (the better-shaped

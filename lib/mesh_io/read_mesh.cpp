@@ -1,6 +1,7 @@
 #include "lib/mesh_io/read_mesh.hpp"
 
 #include <assimp/scene.h>
+#include <unistd.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
@@ -19,6 +20,8 @@
 #include <system_error>
 #include <vector>
 
+#include "lib/mesh_io/mesh_file_checks.hpp"
+#include "lib/mesh_io/numbered_mesh_bytes.hpp"
 #include "lib/mesh_io/read_obj.hpp"
 
 namespace tissu {
@@ -225,18 +228,6 @@ std::string no_numbering_reason(const std::string& extension, const aiScene& sce
   return "";
 }
 
-void check_readable(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status)) {
-    throw MeshError(name + ": cannot read mesh: no such file");
-  }
-  if (std::filesystem::is_directory(status)) {
-    throw MeshError(name + ": cannot read mesh: it is a directory, not a file");
-  }
-}
-
 /// Reads an OBJ file with read_obj: the file's vertex numbers are those of its `v` statements.
 NumberedMesh import_obj(const std::filesystem::path& file) {
   ObjPolygons obj = read_obj(file);
@@ -255,7 +246,13 @@ NumberedMesh import_with_assimp(const std::filesystem::path& file) {
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(name, 0);
   if (scene == nullptr) {
-    throw MeshError(name + ": cannot read mesh: " + importer.GetErrorString());
+    const std::string error = importer.GetErrorString();
+    if (error.find("bad_alloc") != std::string::npos) {  // assimp reports std::bad_alloc's what()
+      throw MeshError(name +
+                      ": cannot read mesh: the importer (assimp) ran out of memory on it: "
+                      "the file is damaged, or too large for the memory limit");
+    }
+    throw MeshError(name + ": cannot read mesh: " + error);
   }
   if (!repairs.log().first().empty()) {
     throw MeshError(name + ": cannot read mesh: the importer reported \"" + repairs.log().first() +
@@ -281,16 +278,56 @@ NumberedMesh import_with_assimp(const std::filesystem::path& file) {
   return out;
 }
 
+/// Default limits on the importer's child process for a file of `file_bytes`: 20 s plus 0.1 s
+/// per MiB (a 1 GiB file gets 2 min), and 2 GiB plus 32 bytes per byte of file, at most three
+/// quarters of the machine's memory.
+SandboxLimits default_importer_limits(std::uintmax_t file_bytes) {
+  SandboxLimits limits;
+  limits.wall_time = std::chrono::milliseconds(20'000 + 100 * (file_bytes >> 20));
+  const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  const double wanted = 2.0 * (1 << 30) + 32.0 * static_cast<double>(file_bytes);
+  limits.memory_bytes =
+      static_cast<std::size_t>(physical > 0 ? std::min(wanted, 0.75 * physical) : wanted);
+  return limits;
+}
+
+/// import_with_assimp(file) in a child process (sandboxed_call.hpp): assimp 5.2's loaders crash,
+/// loop forever or allocate without bound on some damaged files, which must not take tissu with
+/// them. Its failures become a MeshError naming the file.
+NumberedMesh import_with_assimp_isolated(const std::filesystem::path& file,
+                                         const SandboxLimits& limits) {
+  std::string bytes;
+  try {
+    bytes = sandboxed_call([&] { return numbered_mesh_bytes(import_with_assimp(file)); }, limits);
+  } catch (const SandboxFailure& e) {
+    const char* why = e.kind() == SandboxFailure::Kind::over_a_limit
+                          ? ": the file is damaged, or too large for the limit"
+                      : e.kind() == SandboxFailure::Kind::crashed ? ": the file is damaged"
+                                                                  : "";
+    throw MeshError(file.string() + ": cannot read mesh: the importer (assimp) " + e.what() +
+                    (e.kind() == SandboxFailure::Kind::not_started ? "" : " on it") + why);
+  } catch (const std::exception& e) {  // a MeshError of import_with_assimp, passed back
+    throw MeshError(e.what());
+  }
+  try {
+    return numbered_mesh_from_bytes(bytes);
+  } catch (const std::exception& e) {
+    throw MeshError(file.string() + ": cannot read mesh: " + e.what());
+  }
+}
+
 /// The polygons of `file`, unchecked, with the file's vertex numbering.
-NumberedMesh import_numbered(const std::filesystem::path& file) {
-  check_readable(file);
-  return lowercase_extension(file) == ".obj" ? import_obj(file) : import_with_assimp(file);
+NumberedMesh import_numbered(const std::filesystem::path& file, const MeshImportLimits& limits) {
+  const std::uintmax_t size = check_mesh_file(file, limits.max_file_bytes);
+  if (lowercase_extension(file) == ".obj") return import_obj(file);
+  return import_with_assimp_isolated(file, limits.importer.value_or(default_importer_limits(size)));
 }
 
 }  // namespace
 
-NumberedMesh read_numbered_mesh(const std::filesystem::path& file) {
-  NumberedMesh out = import_numbered(file);
+NumberedMesh read_numbered_mesh(const std::filesystem::path& file, const MeshImportLimits& limits) {
+  NumberedMesh out = import_numbered(file, limits);
   try {
     validate_indexed_mesh(out.mesh);
   } catch (const MeshError& e) {
@@ -299,12 +336,12 @@ NumberedMesh read_numbered_mesh(const std::filesystem::path& file) {
   return out;
 }
 
-IndexedMesh read_mesh(const std::filesystem::path& file) {
-  return read_numbered_mesh(file).mesh;
+IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits& limits) {
+  return read_numbered_mesh(file, limits).mesh;
 }
 
-IndexedMesh read_polygons(const std::filesystem::path& file) {
-  return import_numbered(file).mesh;
+IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits) {
+  return import_numbered(file, limits).mesh;
 }
 
 }  // namespace tissu

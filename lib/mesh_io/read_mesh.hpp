@@ -3,10 +3,13 @@
 /// Reading a cloth mesh from a file: OBJ with tissu's own reader (read_obj.hpp), PLY, glTF/GLB,
 /// STL and OFF through assimp.
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "lib/mesh_io/sandboxed_call.hpp"
 #include "topology/indexed_mesh.hpp"
 
 namespace tissu {
@@ -24,6 +27,16 @@ struct NumberedMesh {
   bool has_vertex_numbering() const { return no_numbering_reason.empty(); }
 };
 
+/// Bounds on reading one mesh file, which is untrusted input (docs/scenario.md, "Limits").
+struct MeshImportLimits {
+  /// larger files are refused before anything reads them (bytes)
+  std::uintmax_t max_file_bytes = std::uintmax_t{1} << 30;
+  /// time and memory of the child process in which assimp reads the file; by default 20 s plus
+  /// 0.1 s per MiB of file, and 2 GiB plus 32 bytes per byte of file, at most three quarters of
+  /// the machine's memory
+  std::optional<SandboxLimits> importer;
+};
+
 /// Reads the polygon mesh in `file` and checks it with validate_indexed_mesh.
 ///
 /// All meshes of the file's scene are merged into one, with their node transforms applied.
@@ -37,18 +50,25 @@ struct NumberedMesh {
 /// accessor of a glTF/GLB file with a single mesh primitive placed once. STL files, files with
 /// several meshes (or one placed several times) and other formats have none.
 ///
-/// Throws MeshError whose message starts with the file path: when the file is missing or
-/// unreadable, when the reader fails or reports indices out of range (for OBJ, naming the line),
-/// or when the mesh fails validate_indexed_mesh. Not safe to call concurrently with other uses of
-/// assimp's logger.
-NumberedMesh read_numbered_mesh(const std::filesystem::path& file);
+/// The file is untrusted: check_mesh_file (mesh_file_checks.hpp) refuses what is not a regular
+/// file, files over `limits.max_file_bytes` and headers whose counts cannot fit in the file;
+/// formats other than OBJ are then read by assimp in a child process (sandboxed_call.hpp) within
+/// `limits.importer`, so that a crash, endless loop or allocation storm of the importer becomes
+/// a MeshError. tissu's own OBJ reader runs in the calling process.
+///
+/// Throws MeshError whose message starts with the file path: when the file is missing,
+/// unreadable or refused by those checks, when the reader fails, crashes or exceeds a limit, or
+/// reports indices out of range (for OBJ, naming the line), or when the mesh fails
+/// validate_indexed_mesh.
+NumberedMesh read_numbered_mesh(const std::filesystem::path& file,
+                                const MeshImportLimits& limits = {});
 
-/// The mesh of read_numbered_mesh(file).
-IndexedMesh read_mesh(const std::filesystem::path& file);
+/// The mesh of read_numbered_mesh(file, limits).
+IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits& limits = {});
 
 /// Reads `file` as read_mesh does, but without validate_indexed_mesh: for obstacles, which may be
 /// triangle soups (non-manifold, several parts, polygons of any size). Throws MeshError starting
 /// with the file path when the file cannot be read or the importer fails.
-IndexedMesh read_polygons(const std::filesystem::path& file);
+IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits = {});
 
 }  // namespace tissu

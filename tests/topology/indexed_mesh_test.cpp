@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -137,6 +138,35 @@ TEST(ValidateIndexedMesh, RejectsInconsistentOrientation) {
   EXPECT_THAT(validation_message(mesh),
               HasSubstr("inconsistent orientation: faces 0 and 1 both traverse edge (1, 2) in the "
                         "same direction"));
+}
+
+TEST(ValidateIndexedMesh, RejectsBowTieVertexNamingIt) {
+  // two triangles that touch only at vertex 2: one particle the complex would hold twice
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  mesh.faces = {{0, 1, 2}, {2, 4, 3}};
+  EXPECT_THAT(validation_message(mesh), HasSubstr("non-manifold vertex 2 at (0.5, 1, 0)"));
+  // a third triangle joining the two fans through edges makes vertex 2 ordinary
+  mesh.faces.push_back({1, 4, 2});
+  EXPECT_EQ(validation_message(mesh), "");
+}
+
+TEST(ValidateIndexedMesh, AcceptsOpenAndClosedFansAroundEveryVertex) {
+  // a closed fan (the centre of a hexagon) and open ones (its rim)
+  IndexedMesh mesh;
+  mesh.vertices.push_back({0, 0, 0});
+  for (int k = 0; k < 6; ++k) {
+    const double angle = k * M_PI / 3;
+    mesh.vertices.push_back({std::cos(angle), std::sin(angle), 0});
+  }
+  for (int k = 0; k < 6; ++k) mesh.faces.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  EXPECT_EQ(validation_message(mesh), "");
+  // without one triangle the centre's fan is open, still one fan
+  mesh.faces.pop_back();
+  EXPECT_EQ(validation_message(mesh), "");
+  // without an opposite one too, the centre has two fans
+  mesh.faces.erase(mesh.faces.begin() + 2);
+  EXPECT_THAT(validation_message(mesh), HasSubstr("non-manifold vertex 0 at (0, 0, 0)"));
 }
 
 TEST(TriangulateQuads, CutsEachQuadAlongItsShorterDiagonalAndKeepsTriangles) {

@@ -79,7 +79,9 @@ TEST(WindingNumber, TheHierarchicalSumStaysCloseToTheExactOne) {
     const double exact = tree.exact_winding_number(x);
     worst = std::max(worst, std::abs(tree.winding_number(x) - exact));
     // the faceted sphere lies within 1e-3 of the round one: test away from that band
-    if (std::abs(x.norm() - 1.0) > 1e-2) EXPECT_NEAR(exact, x.norm() < 1.0 ? 1.0 : 0.0, 1e-9);
+    if (std::abs(x.norm() - 1.0) > 1e-2) {
+      EXPECT_NEAR(exact, x.norm() < 1.0 ? 1.0 : 0.0, 1e-9);
+    }
   }
   EXPECT_LT(worst, 0.05);  // the inside test needs < 0.5
   // near the surface the tree opens down to the exact triangles
