@@ -33,11 +33,21 @@ void build_cloth_complex(const IndexedMesh& mesh, double areal_density_kg_per_m2
     vh->info().source_index = static_cast<int>(v);
   }
   builder.begin_surface();
-  for (const auto& face : mesh.faces) {
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
     builder.begin_facet();
     for (int v : face) builder.add_vertex_to_facet(static_cast<std::size_t>(builder_id[v]));
     Dart_handle first = builder.end_facet();
     lcc.set_attribute<2>(first, lcc.create_attribute<2>());
+    if (mesh.has_uvs()) {
+      // the builder's first dart leaves the face's first vertex; corner k is the k-th dart after
+      Dart_handle corner = first;
+      for (std::size_t k = 0; k < face.size(); ++k, corner = lcc.next(corner)) {
+        assert(lcc.vertex_attribute(corner)->info().source_index == face[k]);
+        const Eigen::Vector2d& uv = mesh.face_uvs[f][k];
+        lcc.info(corner).uv = {uv.x(), uv.y(), true};
+      }
+    }
   }
   builder.end_surface();
   // the builder creates no edge attributes: one per edge, to be filled by assign_springs

@@ -10,7 +10,9 @@ namespace tissu {
 
 /// Replaces `lcc` by the faces of `mesh`, sewn along shared edges. Positions are the mesh's;
 /// material coordinates equal them (the mesh is its own rest shape); velocities are zero. Each
-/// particle keeps its mesh vertex id as source_index; vertices no face uses are left out. Rest
+/// particle keeps its mesh vertex id as source_index; vertices no face uses are left out. The
+/// mesh's texture coordinates, if it has some, go on the darts (CornerMechanics::uv, one per face
+/// corner); a mesh without leaves every dart without. Rest
 /// areas, masses and springs are then assigned (rest_geometry.hpp, mass_lumping.hpp,
 /// spring_assignment.hpp).
 /// Throws MeshError when validate_indexed_mesh rejects the mesh, or when the built complex fails

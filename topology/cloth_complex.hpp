@@ -34,12 +34,23 @@ struct EdgeSprings {
                             ///< two faces (the hinge's apices for triangles); absent on borders
 };
 
+/// Texture coordinates of a face corner, carried from the input mesh (IndexedMesh::face_uvs).
+struct CornerUv {
+  double u = 0.0;
+  double v = 0.0;
+  bool given = false;  ///< false on every dart of a cloth whose mesh had no UVs, true on all others
+};
+
 /// Per-corner data of a dart (a half-edge of one face).
 struct CornerMechanics {
   StoredSpring shear;  ///< quads only: diagonal from the dart's origin to the opposite corner
   /// Coupling Gamma (N/m) between the stretches of this dart's structural spring and the next
   /// dart's in the face (energy Gamma dl dl', Delingette 2008's angular term); 0 for none.
   double edge_coupling = 0.0;
+  /// UV of the dart's origin in its face (a vertex on a UV seam has different ones in its faces).
+  /// CGAL gives the darts it creates none: a split gives its new corners the midpoint of the
+  /// UVs of the split edge's ends in that face (corner_uvs.hpp).
+  CornerUv uv;
 };
 
 /// The particle carried by a vertex; the vertex point is its current position (m).

@@ -1,5 +1,6 @@
 #include "topology/current_mesh.hpp"
 
+#include "topology/corner_uvs.hpp"
 #include "topology/eigen_conversions.hpp"
 
 namespace tissu {
@@ -10,10 +11,13 @@ IndexedMesh current_mesh(const ClothComplex& lcc) {
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     mesh.vertices.at(v->info().index_at_last_compile) = to_eigen(v->point());
   }
+  const bool with_uvs = has_corner_uvs(lcc);
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     std::vector<int>& face = mesh.faces.emplace_back();
+    std::vector<Eigen::Vector2d>* uvs = with_uvs ? &mesh.face_uvs.emplace_back() : nullptr;
     for (auto c = lcc.darts_of_orbit<1>(d).begin(); c != lcc.darts_of_orbit<1>(d).end(); ++c) {
       face.push_back(lcc.vertex_attribute(c)->info().index_at_last_compile);
+      if (uvs != nullptr) uvs->push_back(corner_uv(lcc, c));
     }
   }
   return mesh;

@@ -233,6 +233,49 @@ void check_vertex_fans(const IndexedMesh& mesh) {
   }
 }
 
+/// Texture coordinates at every face or at none, one finite (u, v) per corner.
+void check_uvs(const IndexedMesh& mesh) {
+  if (!mesh.has_uvs()) return;
+  // the first face with UVs, to name beside one without
+  std::size_t with = 0;
+  while (with < mesh.face_uvs.size() && mesh.face_uvs[with].empty()) ++with;
+  if (with == mesh.face_uvs.size()) {
+    std::ostringstream message;
+    message << "the mesh has " << mesh.face_uvs.size()
+            << " texture coordinate lists, all empty: a mesh without texture coordinates has none";
+    fail(message);
+  }
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (f >= mesh.face_uvs.size() || mesh.face_uvs[f].empty()) {
+      std::ostringstream message;
+      message << "face " << f << " has no texture coordinates, but face " << with
+              << " has: give every face texture coordinates, or none";
+      fail(message);
+    }
+    const std::vector<Eigen::Vector2d>& uvs = mesh.face_uvs[f];
+    if (uvs.size() != mesh.faces[f].size()) {
+      std::ostringstream message;
+      message << "face " << f << " has " << mesh.faces[f].size() << " corners but " << uvs.size()
+              << " texture coordinates";
+      fail(message);
+    }
+    for (std::size_t k = 0; k < uvs.size(); ++k) {
+      if (!uvs[k].allFinite()) {
+        std::ostringstream message;
+        message << "face " << f << " has a non-finite texture coordinate (" << uvs[k].x() << ", "
+                << uvs[k].y() << ") at corner " << k;
+        fail(message);
+      }
+    }
+  }
+  if (mesh.face_uvs.size() > mesh.faces.size()) {
+    std::ostringstream message;
+    message << "the mesh has texture coordinates for " << mesh.face_uvs.size() << " faces but "
+            << mesh.faces.size() << " faces";
+    fail(message);
+  }
+}
+
 }  // namespace
 
 void validate_indexed_mesh(const IndexedMesh& mesh) {
@@ -243,24 +286,41 @@ void validate_indexed_mesh(const IndexedMesh& mesh) {
   }
   check_edges(mesh);
   check_vertex_fans(mesh);
+  check_uvs(mesh);
 }
 
 IndexedMesh triangulate_quads(const IndexedMesh& mesh) {
-  IndexedMesh out{mesh.vertices, {}};
-  for (const std::vector<int>& f : mesh.faces) {
+  IndexedMesh out{mesh.vertices, {}, {}};
+  const bool with_uvs = mesh.has_uvs();
+  // each output face as corners of its input face, which carry the vertex and its UV there
+  const auto add = [&](std::size_t face, std::vector<int> corners) {
+    std::vector<int>& ids = out.faces.emplace_back();
+    std::vector<Eigen::Vector2d>* uvs = with_uvs ? &out.face_uvs.emplace_back() : nullptr;
+    // a face without UVs (in a mesh validate_indexed_mesh refuses) stays without
+    const bool face_has_uvs = with_uvs && face < mesh.face_uvs.size() &&
+                              mesh.face_uvs[face].size() == mesh.faces[face].size();
+    for (int k : corners) {
+      ids.push_back(mesh.faces[face][k]);
+      if (face_has_uvs) uvs->push_back(mesh.face_uvs[face][k]);
+    }
+  };
+  for (std::size_t face = 0; face < mesh.faces.size(); ++face) {
+    const std::vector<int>& f = mesh.faces[face];
     if (f.size() != 4) {
-      out.faces.push_back(f);
+      std::vector<int> corners(f.size());
+      for (std::size_t k = 0; k < f.size(); ++k) corners[k] = static_cast<int>(k);
+      add(face, corners);
       continue;
     }
     const auto length2 = [&](int a, int b) {
       return (mesh.vertices[f[a]] - mesh.vertices[f[b]]).squaredNorm();
     };
     if (length2(0, 2) <= length2(1, 3)) {
-      out.faces.push_back({f[0], f[1], f[2]});
-      out.faces.push_back({f[0], f[2], f[3]});
+      add(face, {0, 1, 2});
+      add(face, {0, 2, 3});
     } else {
-      out.faces.push_back({f[0], f[1], f[3]});
-      out.faces.push_back({f[1], f[2], f[3]});
+      add(face, {0, 1, 3});
+      add(face, {1, 2, 3});
     }
   }
   return out;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "topology/complex_navigation.hpp"
+#include "topology/corner_uvs.hpp"
 #include "topology/local_update.hpp"
 #include "topology/validity.hpp"
 
@@ -40,6 +41,7 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   const Vertex_handle m =
       lcc.create_vertex_attribute(CGAL::midpoint(a->point(), b->point()), middle);
   lcc.insert_cell_0_in_cell_1(dart, m);
+  interpolate_uvs_at_inserted_vertex(lcc, m);  // CGAL gives the darts from m none
 
   // cutting a quad returns the new edge's dart on the side of its first dart: both halves are the
   // faces of that dart and of its twin
@@ -47,6 +49,7 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   auto cut = [&](Dart_handle from, Dart_handle to) {
     const Dart_handle new_edge = lcc.insert_cell_1_in_cell_2(from, to);
     lcc.set_attribute<1>(new_edge, lcc.create_attribute<1>());  // CGAL gives a new edge none
+    copy_uvs_to_inserted_edge(lcc, new_edge);                   // nor its darts UVs
     faces.push_back(new_edge);
     faces.push_back(lcc.opposite<2>(new_edge));
   };

@@ -13,7 +13,9 @@ namespace tissu {
 /// and material coordinates, and is pinned when both ends are (a clamped edge); since each
 /// half-triangle then lumps rho A / 6 onto its corners and 2 x_mid = x_a + x_b, the total mass,
 /// linear momentum and centre of mass are unchanged. Rest areas, masses and springs are recomputed
-/// on the two to four faces around it. Requires the edge's faces to be triangles (throws
+/// on the two to four faces around it. In each face, the new corner's UV is the midpoint of that
+/// face's UVs at the edge's ends, and the cut edge's corners take the UVs the face had there
+/// (corner_uvs.hpp). Requires the edge's faces to be triangles (throws
 /// std::invalid_argument otherwise). Returns a dart starting at the new vertex.
 Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& settings);
 

@@ -38,11 +38,22 @@ void add_spring_problem(const StoredSpring& spring, const char* name,
 }
 
 void check_darts(const ClothComplex& lcc, std::vector<std::string>& problems) {
+  std::size_t darts = 0, with_uv = 0;
   for (auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) {
+    const CornerUv& uv = lcc.info(d).uv;
+    ++darts;
+    with_uv += uv.given;
+    if (uv.given && !(std::isfinite(uv.u) && std::isfinite(uv.v))) {
+      problems.push_back("a dart has a non-finite UV");
+    }
     if (lcc.attribute<0>(d) == nullptr) problems.push_back("a dart has no vertex attribute");
     if (lcc.attribute<1>(d) == nullptr) problems.push_back("a dart has no edge attribute");
     if (lcc.attribute<2>(d) == nullptr) problems.push_back("a dart has no face attribute");
     add_spring_problem(lcc.info(d).shear, "shear", problems);
+  }
+  if (with_uv != 0 && with_uv != darts) {
+    problems.push_back(std::to_string(darts - with_uv) + " of " + std::to_string(darts) +
+                       " darts have no UV, but the others have one");
   }
 }
 

@@ -10,7 +10,8 @@
 namespace tissu {
 
 /// What is wrong with `lcc`, one sentence per problem, empty when valid: CGAL's is_valid();
-/// every dart on a vertex, an edge and a face attribute; one edge attribute per edge, none
+/// every dart on a vertex, an edge and a face attribute, and with a finite UV if and only if the
+/// others have one (corner_uvs.hpp); one edge attribute per edge, none
 /// orphaned; every vertex attribute on a dart, with a finite position, material coordinates and
 /// velocity and a positive mass; every face with a positive rest area equal to the area of its
 /// material coordinates; no unassigned spring slot on an edge or a dart; every present spring with

@@ -17,11 +17,13 @@ struct VertexRestData {
   const std::vector<Eigen::Vector3d>& rest_m;       ///< #V material coordinates (m)
 };
 
-/// The text of an OBJ file of `mesh`, with one `vt` per vertex when `rest` is given.
+/// The text of an OBJ file of `mesh`: `vt` are the mesh's UVs when it has some (one per distinct
+/// value), else one per vertex, its rest texture coordinates, when `rest` is given.
 std::string obj_text(const IndexedMesh& mesh, const VertexRestData* rest);
 
 /// The bytes of a binary little-endian PLY file of `mesh`, with the vertex properties
-/// s t rest_x rest_y rest_z when `rest` is given.
+/// s t rest_x rest_y rest_z when `rest` is given, and the face property texcoord when the mesh
+/// has UVs.
 std::string ply_bytes(const IndexedMesh& mesh, const VertexRestData* rest);
 
 }  // namespace tissu

@@ -41,8 +41,16 @@ std::string header(const IndexedMesh& mesh, bool with_rest) {
         "property double s\nproperty double t\nproperty double rest_x\nproperty double rest_y\n"
         "property double rest_z\n";
   }
+  if (mesh.has_uvs()) {
+    out +=
+        "comment texcoord: the cloth mesh's own texture coordinates, u v at each corner of the "
+        "face in vertex_indices order (interpolated where the cloth was refined, kept on both "
+        "sides of a tear)\n";
+  }
   out += "element face " + std::to_string(mesh.faces.size()) +
-         "\nproperty list uchar int vertex_indices\nend_header\n";
+         "\nproperty list uchar int vertex_indices\n";
+  if (mesh.has_uvs()) out += "property list uchar double texcoord\n";
+  out += "end_header\n";
   return out;
 }
 
@@ -51,7 +59,7 @@ std::string header(const IndexedMesh& mesh, bool with_rest) {
 std::string ply_bytes(const IndexedMesh& mesh, const VertexRestData* rest) {
   std::string out = header(mesh, rest != nullptr);
   out.reserve(out.size() + mesh.vertices.size() * (rest != nullptr ? 64 : 24) +
-              mesh.faces.size() * 17);
+              mesh.faces.size() * (mesh.has_uvs() ? 82 : 17));
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     append_point(out, mesh.vertices[v]);
     if (rest != nullptr) {
@@ -60,9 +68,17 @@ std::string ply_bytes(const IndexedMesh& mesh, const VertexRestData* rest) {
       append_point(out, rest->rest_m[v]);
     }
   }
-  for (const std::vector<int>& face : mesh.faces) {
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<int>& face = mesh.faces[f];
     out += static_cast<char>(static_cast<unsigned char>(face.size()));
     for (int v : face) append_little_endian(out, static_cast<std::int32_t>(v));
+    if (mesh.has_uvs()) {
+      out += static_cast<char>(static_cast<unsigned char>(2 * face.size()));
+      for (const Eigen::Vector2d& uv : mesh.face_uvs[f]) {
+        append_little_endian(out, uv.x());
+        append_little_endian(out, uv.y());
+      }
+    }
   }
   return out;
 }

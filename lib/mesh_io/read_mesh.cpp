@@ -110,6 +110,9 @@ bool is_polygon(const aiFace& face) {
 struct Polygons {
   std::vector<Eigen::Vector3d> positions;  ///< (m)
   std::vector<std::vector<int>> faces;
+  /// #F lists of the UV at each corner of the face, or empty for a face without (all faces of a
+  /// source without UVs); may be left empty then
+  std::vector<std::vector<Eigen::Vector2d>> face_uvs;
 };
 
 /// The polygons of `in` (points and lines left out), its positions moved by `transform`.
@@ -126,6 +129,9 @@ Polygons polygons_of(const aiMesh& in, unsigned mesh_index, bool several_meshes,
     const aiFace& face = in.mFaces[f];
     if (!is_polygon(face)) continue;
     std::vector<int>& ids = out.faces.emplace_back();
+    // UVs are per vertex in assimp (its loaders split vertices at UV seams); the merger joins
+    // the vertices again and keeps the UVs per corner
+    std::vector<Eigen::Vector2d>& uvs = out.face_uvs.emplace_back();
     for (unsigned i = 0; i < face.mNumIndices; ++i) {
       const unsigned index = face.mIndices[i];
       if (index >= in.mNumVertices) {
@@ -138,13 +144,19 @@ Polygons polygons_of(const aiMesh& in, unsigned mesh_index, bool several_meshes,
                         ", but the mesh has " + std::to_string(in.mNumVertices) + " vertices");
       }
       ids.push_back(static_cast<int>(index));
+      if (in.mTextureCoords[0] != nullptr) {
+        const aiVector3D& uv = in.mTextureCoords[0][index];
+        uvs.emplace_back(uv.x, uv.y);
+      }
     }
   }
   return out;
 }
 
 /// Merges the polygons of several sources into one IndexedMesh, joining vertices at exactly the
-/// same position and leaving out those no face uses.
+/// same position and leaving out those no face uses. Each face keeps its corners' UVs; the mesh
+/// has none when no face has, and the faces without UVs keep an empty list when some have (which
+/// validate_indexed_mesh refuses).
 class MeshMerger {
  public:
   /// Adds `in`; returns the mesh vertex of each of its positions, -1 for one no face uses.
@@ -157,14 +169,20 @@ class MeshMerger {
     for (std::size_t v = 0; v < in.positions.size(); ++v) {
       if (used[v]) ids[v] = vertex_id(in.positions[v]);
     }
-    for (const std::vector<int>& face : in.faces) {
+    for (std::size_t f = 0; f < in.faces.size(); ++f) {
       std::vector<int>& out = m_mesh.faces.emplace_back();
-      for (int v : face) out.push_back(ids[v]);
+      for (int v : in.faces[f]) out.push_back(ids[v]);
+      m_mesh.face_uvs.push_back(f < in.face_uvs.size() ? in.face_uvs[f]
+                                                       : std::vector<Eigen::Vector2d>{});
+      m_any_uvs = m_any_uvs || !m_mesh.face_uvs.back().empty();
     }
     return ids;
   }
 
-  IndexedMesh take() { return std::move(m_mesh); }
+  IndexedMesh take() {
+    if (!m_any_uvs) m_mesh.face_uvs.clear();
+    return std::move(m_mesh);
+  }
 
  private:
   /// Id of the vertex at `p`, added if new; non-finite positions are never joined.
@@ -182,6 +200,7 @@ class MeshMerger {
 
   IndexedMesh m_mesh;
   std::map<std::array<double, 3>, int> m_ids;
+  bool m_any_uvs = false;  ///< whether a face added so far has UVs
 };
 
 /// The meshes a scene places, in node order, each with its node transforms.
@@ -231,9 +250,16 @@ std::string no_numbering_reason(const std::string& extension, const aiScene& sce
 /// Reads an OBJ file with read_obj: the file's vertex numbers are those of its `v` statements.
 NumberedMesh import_obj(const std::filesystem::path& file) {
   ObjPolygons obj = read_obj(file);
+  std::vector<std::vector<Eigen::Vector2d>> face_uvs(obj.faces.size());
+  for (std::size_t f = 0; f < obj.faces.size(); ++f) {
+    for (int t : obj.face_texture_coordinates[f]) {
+      face_uvs[f].push_back(obj.texture_coordinates[t].head<2>());  // w, if given, is dropped
+    }
+  }
   MeshMerger merger;
   NumberedMesh out;
-  out.mesh_vertex_of_file_vertex = merger.add({std::move(obj.positions), std::move(obj.faces)});
+  out.mesh_vertex_of_file_vertex =
+      merger.add({std::move(obj.positions), std::move(obj.faces), std::move(face_uvs)});
   out.mesh = merger.take();
   return out;
 }
@@ -341,7 +367,9 @@ IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits&
 }
 
 IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits) {
-  return import_numbered(file, limits).mesh;
+  IndexedMesh mesh = import_numbered(file, limits).mesh;
+  mesh.face_uvs.clear();  // obstacles have no use for them, on some faces or all
+  return mesh;
 }
 
 }  // namespace tissu

@@ -40,10 +40,20 @@ struct MeshImportLimits {
 /// Reads the polygon mesh in `file` and checks it with validate_indexed_mesh.
 ///
 /// All meshes of the file's scene are merged into one, with their node transforms applied.
-/// Only positions are kept: vertices at exactly the same position are joined, so a cloth is not
-/// cut at UV or normal seams, nor between the groups or objects of one file. Points and lines
-/// are ignored, and so are vertices no face uses; triangles and quads are kept as they are (never
+/// Positions and texture coordinates are kept (normals, colours and materials are not): vertices
+/// at exactly the same position are joined, so a cloth is not cut at UV or normal seams, nor
+/// between the groups or objects of one file, and the texture coordinates are kept per face
+/// corner (IndexedMesh::face_uvs), so a UV seam survives the joining. Points and lines are
+/// ignored, and so are vertices no face uses; triangles and quads are kept as they are (never
 /// triangulated). The mesh's vertices come in the order of the file's vertices that faces use.
+///
+/// Texture coordinates: OBJ's `vt` (u and v; a w is dropped) at the corners of `f v/vt` faces;
+/// through assimp, the first UV channel (glTF's TEXCOORD_0, PLY's per-vertex `s t`, `u v` or
+/// `texture_u texture_v`), per vertex, so a seam is made of vertices the file duplicates at it.
+/// assimp 5.2 reads PLY's per-face `texcoord` lists (MeshLab's, and what write_mesh writes) into
+/// its per-vertex UVs, one face's value winning at a seam: read tissu's OBJ output, not its PLY,
+/// to get the seams back. A mesh with texture coordinates on some faces only is refused (the
+/// message names a face with and one without): give every face UVs, or none.
 ///
 /// The file's vertex numbering (NumberedMesh::mesh_vertex_of_file_vertex) is the order of the `v`
 /// statements in OBJ, of the vertex element in PLY, of the vertex list in OFF, and of the POSITION
@@ -66,8 +76,9 @@ NumberedMesh read_numbered_mesh(const std::filesystem::path& file,
 /// The mesh of read_numbered_mesh(file, limits).
 IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits& limits = {});
 
-/// Reads `file` as read_mesh does, but without validate_indexed_mesh: for obstacles, which may be
-/// triangle soups (non-manifold, several parts, polygons of any size). Throws MeshError starting
+/// Reads `file` as read_mesh does, but without validate_indexed_mesh and without texture
+/// coordinates: for obstacles, which may be triangle soups (non-manifold, several parts, polygons
+/// of any size). Throws MeshError starting
 /// with the file path when the file cannot be read or the importer fails.
 IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits = {});
 

@@ -28,6 +28,20 @@ void check_faces(const std::filesystem::path& file, const IndexedMesh& mesh) {
                        ", but the mesh has " + std::to_string(mesh.vertices.size()) + " vertices");
       }
     }
+    if (!mesh.has_uvs()) continue;
+    const std::size_t uvs = f < mesh.face_uvs.size() ? mesh.face_uvs[f].size() : 0;
+    if (uvs != face.size()) {
+      fail(file, "face " + std::to_string(f) + " has " + std::to_string(face.size()) +
+                     " vertices but " + std::to_string(uvs) + " texture coordinates");
+    }
+    if (face.size() > 127) {  // PLY's uchar count of its texcoord list: 2 numbers per corner
+      fail(file, "face " + std::to_string(f) + " has " + std::to_string(face.size()) +
+                     " vertices, expected at most 127 with texture coordinates");
+    }
+  }
+  if (mesh.face_uvs.size() > mesh.faces.size()) {
+    fail(file, "texture coordinates for " + std::to_string(mesh.face_uvs.size()) + " faces, but " +
+                   std::to_string(mesh.faces.size()) + " faces");
   }
 }
 

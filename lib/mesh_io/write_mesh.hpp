@@ -47,17 +47,24 @@ std::vector<Eigen::Vector3d> rest_texture_coordinates(const std::vector<Eigen::V
 /// written so that they read back to the same doubles: OBJ in text (shortest round-trip
 /// decimal), PLY as binary little-endian doubles.
 ///
-/// With `rest`, the material coordinates are written too:
-/// - OBJ: one `vt u v w` per vertex, the rest_texture_coordinates, with the vertex's index
-///   (faces `f a/a b/b c/c`), since OBJ has no other per-vertex field;
-/// - PLY: vertex properties `s t` (the u and v of rest_texture_coordinates, which most readers
-///   take as texture coordinates) and `rest_x rest_y rest_z`, the material coordinates as they
-///   are (all double).
-/// A comment at the top of the file says what each field holds.
+/// Texture coordinates, and with `rest` the material coordinates, are written too:
+/// - OBJ, when the mesh has UVs (IndexedMesh::face_uvs, the cloth mesh's own, carried through
+///   refinement and tearing): one `vt u v` per distinct UV value, in the order the face corners
+///   first use them, faces `f a/ta b/tb c/tc` (a seam's two sides have different `vt`); the
+///   material coordinates are then not in the file (write PLY for both).
+/// - OBJ without UVs, with `rest`: one `vt u v w` per vertex, the rest_texture_coordinates, with
+///   the vertex's index (faces `f a/a b/b c/c`), since OBJ has no other per-vertex field;
+/// - PLY, with `rest`: vertex properties `s t` (the u and v of rest_texture_coordinates, which
+///   most readers take as texture coordinates) and `rest_x rest_y rest_z`, the material
+///   coordinates as they are (all double);
+/// - PLY, when the mesh has UVs: the face property `texcoord` (a list of doubles, u v for each
+///   corner in vertex_indices order: MeshLab's per-wedge texture coordinates).
+/// A comment at the top of the file says what each field holds. Without UVs and without `rest`,
+/// the file holds positions and faces only.
 ///
 /// Throws std::runtime_error naming the file if a face refers to a vertex out of range, has
-/// fewer than 3 or more than 255 vertices, `rest` does not have one entry per vertex, or the
-/// file cannot be written.
+/// fewer than 3 or more than 255 vertices (127 with UVs), the mesh has UVs but not one per corner
+/// of every face, `rest` does not have one entry per vertex, or the file cannot be written.
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh, MeshFormat format);
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh,
                 const RestCoordinates& rest, MeshFormat format);

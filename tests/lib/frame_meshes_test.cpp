@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <numeric>
 #include <string>
@@ -145,6 +146,116 @@ TEST(FrameMeshes, QuadsStayQuadsInBothFormats) {
     } else {
       expect_ply_frames_are_the_model(r);
     }
+  }
+}
+
+/// The UV chart of a face left (x < 0.2 m) or right of the seam of seamed_sheet_obj: affine in the
+/// rest position, so splits keep every corner on its chart.
+Eigen::Vector2d chart_uv(const Eigen::Vector3d& rest_m, bool right) {
+  return right ? Eigen::Vector2d(2.0 * rest_m.x() + 0.1, 1.5 * rest_m.z())
+               : Eigen::Vector2d(2.0 * rest_m.x(), 2.5 * rest_m.z());
+}
+
+/// An OBJ of the 0.4 m x 0.4 m sheet of hanging_sheet (4 x 4 cells in triangles, x-z plane) with
+/// its own UVs on two charts, seam along x = 0.2 m (all multiples of 0.05, which std::to_string's
+/// 6 decimals write exactly).
+std::filesystem::path seamed_sheet_obj(const std::filesystem::path& dir) {
+  std::string obj;
+  for (int j = 0; j <= 4; ++j) {
+    for (int i = 0; i <= 4; ++i)
+      obj += "v " + std::to_string(0.1 * i) + " 0 " + std::to_string(0.1 * j) + "\n";
+  }
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      const int a = j * 5 + i, b = a + 1, c = a + 6, d = a + 5;
+      faces.push_back({a, b, c});
+      faces.push_back({a, c, d});
+    }
+  }
+  std::string f_lines;
+  int vt = 0;
+  for (const std::vector<int>& face : faces) {
+    const bool right = (face[0] % 5) >= 2;  // every face's corners have i >= 2 or i <= 2
+    f_lines += "f";
+    for (int v : face) {
+      const Eigen::Vector2d uv = chart_uv({0.1 * (v % 5), 0.0, 0.1 * (v / 5)}, right);
+      obj += "vt " + std::to_string(uv.x()) + " " + std::to_string(uv.y()) + "\n";
+      f_lines += " " + std::to_string(v + 1) + "/" + std::to_string(++vt);
+    }
+    f_lines += "\n";
+  }
+  const std::filesystem::path file = dir / "seamed_sheet.obj";
+  std::ofstream(file) << obj << f_lines;
+  return file;
+}
+
+/// The sheet of hanging_sheet read from seamed_sheet_obj, refined and cut as kRefinedAndCut.
+std::string seamed_sheet_scenario(const std::filesystem::path& mesh, const std::string& format) {
+  return R"({
+  "cloth": { "mesh": { "file": ")" +
+         mesh.string() + R"(" }, "density": 0.2,
+             "springs": { "structural": { "stiffness": 200, "damping": 0.1 } } },
+  "pins": [ { "side": "top" } ],
+  "simulation": { "frames": 3, "substeps": 5 },
+  "output": { "mesh_format": ")" +
+         format + R"(" })" + kRefinedAndCut + R"(
+})";
+}
+
+/// Each corner's UV is its face's chart at the corner's rest position.
+void expect_uvs_on_their_charts(const std::vector<std::vector<int>>& faces,
+                                const std::vector<std::vector<Eigen::Vector2d>>& uvs,
+                                const std::vector<Eigen::Vector3d>& rest_m, std::size_t frame) {
+  ASSERT_EQ(uvs.size(), faces.size()) << "frame " << frame;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    ASSERT_EQ(uvs[f].size(), faces[f].size()) << "frame " << frame << " face " << f;
+    double x = 0.0;
+    for (int v : faces[f]) x += rest_m[v].x() / static_cast<double>(faces[f].size());
+    for (std::size_t k = 0; k < faces[f].size(); ++k) {
+      EXPECT_LT((uvs[f][k] - chart_uv(rest_m[faces[f][k]], x > 0.2)).norm(), 1e-12)
+          << "frame " << frame << " face " << f << " corner " << k;
+    }
+  }
+}
+
+TEST(FrameMeshes, ObjFramesCarryTheInputMeshsUvsThroughRefinementAndACut) {
+  const std::filesystem::path mesh = seamed_sheet_obj(test::fresh_dir_for_this_test("frame_uvs"));
+  const Recorded r = run(seamed_sheet_scenario(mesh, "obj"), "uvs_obj");
+  ASSERT_EQ(r.stats.size(), 4u);
+  EXPECT_GT(r.stats[1].particles, r.stats[0].particles);  // refined
+  EXPECT_EQ(r.stats[3].pieces, 2);                        // and cut
+  for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
+    const MaterialSurface& model = r.surfaces[f];
+    const ObjPolygons obj = read_obj(frame_file(r, static_cast<int>(f), "obj"));
+    EXPECT_EQ(obj.positions, model.current.vertices) << "frame " << f;
+    EXPECT_EQ(obj.faces, model.current.faces) << "frame " << f;
+    std::vector<std::vector<Eigen::Vector2d>> uvs;
+    for (const std::vector<int>& ids : obj.face_texture_coordinates) {
+      std::vector<Eigen::Vector2d>& face = uvs.emplace_back();
+      for (int t : ids) face.push_back(obj.texture_coordinates.at(t).head<2>());
+    }
+    expect_uvs_on_their_charts(obj.faces, uvs, model.rest_m, f);
+    EXPECT_EQ(uvs, model.current.face_uvs) << "frame " << f;  // to the last bit
+  }
+}
+
+TEST(FrameMeshes, PlyFramesCarryTheInputMeshsUvsThroughRefinementAndACut) {
+  const std::filesystem::path mesh = seamed_sheet_obj(test::fresh_dir_for_this_test("frame_uvs"));
+  const Recorded r = run(seamed_sheet_scenario(mesh, "ply"), "uvs_ply");
+  ASSERT_EQ(r.stats.size(), 4u);
+  EXPECT_EQ(r.stats[3].pieces, 2);
+  expect_ply_frames_are_the_model(r);
+  for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
+    const MaterialSurface& model = r.surfaces[f];
+    const test::WrittenPly ply = test::read_written_ply(frame_file(r, static_cast<int>(f), "ply"));
+    std::vector<std::vector<Eigen::Vector2d>> uvs;
+    for (const std::vector<double>& list : ply.face_texcoords) {
+      std::vector<Eigen::Vector2d>& face = uvs.emplace_back();
+      for (std::size_t k = 0; k + 1 < list.size(); k += 2) face.emplace_back(list[k], list[k + 1]);
+    }
+    expect_uvs_on_their_charts(ply.faces, uvs, model.rest_m, f);
+    EXPECT_EQ(uvs, model.current.face_uvs) << "frame " << f;
   }
 }
 

@@ -166,6 +166,89 @@ TEST(ReadMesh, ObjIsNotCutAtUvSeams) {
   EXPECT_EQ(shared_vertices(mesh.faces[0], mesh.faces[1]), 2u);
 }
 
+TEST(ReadMesh, ObjKeepsItsUvsPerCornerAcrossASeam) {
+  // vertices 2 and 3 (1-based) have other UVs in the triangle than in the quad
+  const fs::path file = write_file(test_dir() / "seam.obj",
+                                   "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 2 0 0.5\n"
+                                   "vt 0 0\nvt 0.5 0\nvt 0.5 0.5 0.75\nvt 0 0.5\nvt 0.625 0\n"
+                                   "vt 1 0.25\nvt 0.625 0.5\n"
+                                   "f 1/1 2/2 3/3 4/4\nf 2/5 5/6 3/7\n");
+  const IndexedMesh mesh = read_mesh(file);
+  ASSERT_EQ(mesh.vertices.size(), 5u);
+  ASSERT_EQ(mesh.face_uvs.size(), 2u);
+  EXPECT_EQ(mesh.face_uvs[0],
+            (std::vector<Eigen::Vector2d>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}));
+  EXPECT_EQ(mesh.face_uvs[1], (std::vector<Eigen::Vector2d>{{0.625, 0}, {1, 0.25}, {0.625, 0.5}}));
+  EXPECT_EQ(mesh.faces[0][1], mesh.faces[1][0]);  // one vertex, two UVs
+}
+
+TEST(ReadMesh, ObjWithoutUvsHasNone) {
+  const fs::path file =
+      write_file(test_dir() / "plain.obj", "v 0 0 0\nv 1 0 0\nv 1 0 1\nvt 0 0\nf 1 2 3\n");
+  EXPECT_FALSE(read_mesh(file).has_uvs());
+}
+
+TEST(ReadMesh, UvsOnSomeFacesOnlyAreRefusedNamingAFaceOfEach) {
+  const fs::path file = write_file(test_dir() / "some.obj",
+                                   "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                                   "f 1 2 3\nf 1/1 3/3 4/2\n");
+  EXPECT_THAT(read_error(file),
+              HasSubstr(file.string() + ": face 0 has no texture coordinates, but face 1 has: "
+                                        "give every face texture coordinates, or none"));
+}
+
+TEST(ReadPolygons, IgnoresUvsEvenOnSomeFacesOnly) {
+  // an obstacle has no use for UVs, so it is not refused for them
+  const fs::path file = write_file(test_dir() / "some.obj",
+                                   "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\n"
+                                   "f 1 2 3\nf 1/1 3/1 4/1\n");
+  const IndexedMesh mesh = read_polygons(file);
+  EXPECT_EQ(mesh.faces.size(), 2u);
+  EXPECT_FALSE(mesh.has_uvs());
+}
+
+TEST(ReadMesh, PlyVertexUvsOfVerticesRepeatedAtASeamBecomePerCornerUvs) {
+  // vertices 1 and 4, 2 and 5 are at the same positions with other UVs: joined, the seam stays
+  const fs::path file = write_file(
+      test_dir() / "seam.ply",
+      "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float s\nproperty float t\nelement face 2\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "0 0 0 0 0\n1 0 0 0.5 0\n1 0 1 0.5 0.5\n0 0 1 0 0.5\n1 0 0 0.625 0\n1 0 1 0.625 0.5\n"
+      "2 0 0.5 1 0.25\n"
+      "4 0 1 2 3\n3 4 6 5\n");
+  const NumberedMesh read = read_numbered_mesh(file);
+  const IndexedMesh& mesh = read.mesh;
+  ASSERT_EQ(mesh.vertices.size(), 5u);
+  ASSERT_EQ(mesh.face_uvs.size(), 2u);
+  EXPECT_EQ(mesh.face_uvs[0],
+            (std::vector<Eigen::Vector2d>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}));
+  EXPECT_EQ(mesh.face_uvs[1], (std::vector<Eigen::Vector2d>{{0.625, 0}, {1, 0.25}, {0.625, 0.5}}));
+  EXPECT_EQ(mesh.faces[0][1], mesh.faces[1][0]);
+  EXPECT_EQ(read.mesh_vertex_of_file_vertex[4], read.mesh_vertex_of_file_vertex[1]);
+}
+
+TEST(ReadMesh, GltfUvsAreReadWithAssimpsFlipToVUp) {
+  // kGltf's square with TEXCOORD_0 (0, 0) (0.5, 0) (0.5, 0.25) (0, 0.25), faces 0 1 2 and 0 2 3
+  const std::string gltf = R"({
+  "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2}]}],
+  "buffers": [{"byteLength": 92, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAAAAAAIA/AAAAAAAAAAAAAIA/AAAAAAAAAAAAAAA/AAAAAAAAAD8AAIA+AAAAAAAAgD4AAAEAAgAAAAIAAwA="}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                  {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 0, 1]},
+    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+})";
+  const IndexedMesh mesh = read_mesh(write_file(test_dir() / "square.gltf", gltf));
+  ASSERT_EQ(mesh.face_uvs.size(), 2u);
+  // glTF's v runs down from the image's top; assimp gives 1 - v, OBJ's convention
+  EXPECT_EQ(mesh.face_uvs[0], (std::vector<Eigen::Vector2d>{{0, 1}, {0.5, 1}, {0.5, 0.75}}));
+  EXPECT_EQ(mesh.face_uvs[1], (std::vector<Eigen::Vector2d>{{0, 1}, {0.5, 0.75}, {0, 0.75}}));
+}
+
 TEST(ReadMesh, ObjObjectsAreJoinedIntoOneMesh) {
   const fs::path file = write_file(test_dir() / "objects.obj",
                                    "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\n"

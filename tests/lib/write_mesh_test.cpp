@@ -1,5 +1,6 @@
 // tissu's mesh writers: every vertex in order (coincident ones too), doubles that read back to
-// the same bits, faces as they are, and the rest coordinates as texture coordinates.
+// the same bits, faces as they are, the rest coordinates as texture coordinates, and a mesh's own
+// UVs per corner.
 
 #include "lib/mesh_io/write_mesh.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "lib/mesh_io/read_mesh.hpp"
@@ -48,6 +50,120 @@ CutSheet cut_sheet() {
     s.rest.rest_m.push_back(Eigen::Vector3d(p.x() + 0.1, 0.0, p.z() + 2.0 / 7.0));
   }
   return s;
+}
+
+/// The cut sheet with its own UVs at digits a float cannot hold: a seam at the quad's corner
+/// (1 2) against the triangle's (4 5), equal values at the quad's corner 0 and 3 (one `vt`),
+/// and a -0.
+CutSheet cut_sheet_with_uvs() {
+  CutSheet s = cut_sheet();
+  const double third = 1.0 / 3.0;
+  s.mesh.face_uvs = {{{0.1, third}, {0.7, 1e-17}, {0.7, 0.9}, {0.1, third}},
+                     {{2.0 / 3.0, -0.0}, {1.0, 0.5}, {2.0 / 3.0, 0.9}}};
+  return s;
+}
+
+/// The UV of each corner of the OBJ's faces, through its `vt` ids; fails on a `vt` with a w.
+std::vector<std::vector<Eigen::Vector2d>> corner_uvs_of(const ObjPolygons& obj) {
+  std::vector<std::vector<Eigen::Vector2d>> out;
+  for (const std::vector<int>& ids : obj.face_texture_coordinates) {
+    std::vector<Eigen::Vector2d>& face = out.emplace_back();
+    for (int t : ids) {
+      EXPECT_EQ(obj.texture_coordinates[t].z(), 0.0) << "vt " << t + 1 << " has a w";
+      face.push_back(obj.texture_coordinates[t].head<2>());
+    }
+  }
+  return out;
+}
+
+TEST(WriteMesh, ObjOfAMeshWithUvsWritesOneVtPerDistinctUvAndEachCornersOwn) {
+  const CutSheet s = cut_sheet_with_uvs();
+  const fs::path file = test_dir() / "uvs.obj";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::obj);
+  const ObjPolygons back = read_obj(file);
+  EXPECT_EQ(back.positions, s.mesh.vertices);
+  EXPECT_EQ(back.faces, s.mesh.faces);
+  EXPECT_EQ(back.texture_coordinates.size(), 6u);   // 7 corners, two of them equal
+  EXPECT_EQ(corner_uvs_of(back), s.mesh.face_uvs);  // to the last bit, seam included
+  EXPECT_TRUE(std::signbit(back.texture_coordinates[back.face_texture_coordinates[1][0]].y()));
+  std::ifstream in(file);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_THAT(text, HasSubstr("# vt u v: the cloth mesh's own texture coordinates, per face "
+                              "corner"));
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("rest (material) position")));
+  // and without rest coordinates the same
+  write_mesh(file, s.mesh, MeshFormat::obj);
+  EXPECT_EQ(corner_uvs_of(read_obj(file)), s.mesh.face_uvs);
+}
+
+TEST(WriteMesh, ObjWithUvsReadsBackThroughReadMeshWithItsUvsPerCorner) {
+  const CutSheet s = cut_sheet_with_uvs();
+  const fs::path file = test_dir() / "uvs.obj";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::obj);
+  const IndexedMesh back = read_mesh(file);
+  ASSERT_EQ(back.faces.size(), 2u);
+  EXPECT_EQ(back.vertices.size(), 5u);  // the cut's two pairs joined; the UVs stay per corner
+  EXPECT_EQ(back.face_uvs, s.mesh.face_uvs);
+}
+
+TEST(WriteMesh, PlyOfAMeshWithUvsWritesThemPerCornerBesideTheRestCoordinates) {
+  const CutSheet s = cut_sheet_with_uvs();
+  const fs::path file = test_dir() / "uvs.ply";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::ply);
+  const test::WrittenPly back = test::read_written_ply(file);
+  EXPECT_EQ(back.vertex_properties,
+            (std::vector<std::string>{"x", "y", "z", "s", "t", "rest_x", "rest_y", "rest_z"}));
+  EXPECT_EQ(back.vertex_values.at("rest_x").size(), s.mesh.vertices.size());
+  EXPECT_EQ(back.faces, s.mesh.faces);
+  ASSERT_EQ(back.face_texcoords.size(), s.mesh.faces.size());
+  for (std::size_t f = 0; f < s.mesh.faces.size(); ++f) {
+    std::vector<double> expected;
+    for (const Eigen::Vector2d& uv : s.mesh.face_uvs[f]) {
+      expected.push_back(uv.x());
+      expected.push_back(uv.y());
+    }
+    EXPECT_EQ(back.face_texcoords[f], expected) << "face " << f;
+  }
+  bool said = false;
+  for (const std::string& comment : back.comments) {
+    said = said || comment.find("texcoord: the cloth mesh's own texture coordinates") == 0;
+  }
+  EXPECT_TRUE(said);
+  // without the mesh's UVs, no texcoord
+  write_mesh(file, cut_sheet().mesh, s.rest, MeshFormat::ply);
+  EXPECT_TRUE(test::read_written_ply(file).face_texcoords.empty());
+}
+
+TEST(WriteMesh, PlyWithUvsReadsBackThroughReadMeshWhereThereIsNoSeam) {
+  // assimp keeps one UV per vertex (see read_mesh.hpp): without a seam, every corner's comes back
+  CutSheet s = cut_sheet_with_uvs();
+  s.mesh.face_uvs[1] = {{0.7, 1e-17}, {1.0, 0.5}, {0.7, 0.9}};  // those of the quad's corners
+  const fs::path file = test_dir() / "uvs.ply";
+  write_mesh(file, s.mesh, s.rest, MeshFormat::ply);
+  const IndexedMesh back = read_mesh(file);
+  ASSERT_EQ(back.face_uvs.size(), 2u);
+  for (std::size_t f = 0; f < 2; ++f) {
+    ASSERT_EQ(back.face_uvs[f].size(), s.mesh.face_uvs[f].size());
+    for (std::size_t k = 0; k < back.face_uvs[f].size(); ++k) {
+      EXPECT_LT((back.face_uvs[f][k] - s.mesh.face_uvs[f][k]).norm(), 1e-7)  // assimp's floats
+          << "face " << f << " corner " << k;
+    }
+  }
+}
+
+TEST(WriteMesh, UvsNotOnePerCornerThrowNamingTheFileAndTheFace) {
+  CutSheet s = cut_sheet_with_uvs();
+  s.mesh.face_uvs[1].pop_back();
+  for (MeshFormat format : {MeshFormat::obj, MeshFormat::ply}) {
+    const fs::path file = test_dir() / (std::string("uvs.") + extension(format));
+    try {
+      write_mesh(file, s.mesh, s.rest, format);
+      FAIL() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(file.string() + ": cannot write mesh: face 1 has 3 "
+                                                      "vertices but 2 texture coordinates"));
+    }
+  }
 }
 
 TEST(RestTextureCoordinates, AreTheRestCoordinatesAlongTheClothFrame) {

@@ -23,6 +23,8 @@ struct WrittenPly {
   /// property name -> #V values
   std::map<std::string, std::vector<double>> vertex_values;
   std::vector<std::vector<int>> faces;
+  /// #F lists of u v per corner when the file has the face property texcoord, else empty
+  std::vector<std::vector<double>> face_texcoords;
 };
 
 /// Reads `file`; fails the test (and returns what it read so far) if it is not laid out as
@@ -40,6 +42,7 @@ inline WrittenPly read_written_ply(const std::filesystem::path& file) {
   std::string line;
   std::size_t vertices = 0, faces = 0;
   std::string element;
+  bool with_texcoords = false;
   while (std::getline(header, line)) {
     std::istringstream words(line);
     std::string keyword;
@@ -59,8 +62,11 @@ inline WrittenPly read_written_ply(const std::filesystem::path& file) {
       words >> type >> name;
       EXPECT_EQ(type, "double") << name;
       out.vertex_properties.push_back(name);
+    } else if (keyword == "property" && line == "property list uchar double texcoord") {
+      with_texcoords = true;
     } else if (keyword == "property") {
       EXPECT_EQ(line, "property list uchar int vertex_indices");
+      EXPECT_FALSE(with_texcoords) << "texcoord before vertex_indices";
     }
   }
   std::size_t at = end + std::strlen("end_header\n");
@@ -88,6 +94,12 @@ inline WrittenPly read_written_ply(const std::filesystem::path& file) {
       std::int32_t value = 0;
       if (!take(&value, sizeof value)) return out;
       id = value;
+    }
+    if (!with_texcoords) continue;
+    if (!take(&count, 1)) return out;
+    std::vector<double>& uvs = out.face_texcoords.emplace_back(count);
+    for (double& value : uvs) {
+      if (!take(&value, sizeof value)) return out;
     }
   }
   EXPECT_EQ(at, bytes.size()) << file << ": bytes after the faces";

@@ -185,5 +185,55 @@ TEST(TriangulateQuads, CutsEachQuadAlongItsShorterDiagonalAndKeepsTriangles) {
   EXPECT_EQ(triangulate_quads(mesh).faces[0], (std::vector<int>{0, 1, 2}));
 }
 
+/// quad_and_triangle() with a UV per corner; the two faces give their shared vertices 1 and 2
+/// different UVs (a seam).
+IndexedMesh quad_and_triangle_with_uvs() {
+  IndexedMesh mesh = quad_and_triangle();
+  mesh.face_uvs = {{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}, {{0.6, 0}, {1, 0.25}, {0.6, 0.5}}};
+  return mesh;
+}
+
+TEST(ValidateIndexedMesh, AcceptsUvsOnEveryCornerSeamIncluded) {
+  EXPECT_EQ(validation_message(quad_and_triangle_with_uvs()), "");
+}
+
+TEST(ValidateIndexedMesh, RejectsUvsOnSomeFacesOnlyNamingAFaceOfEach) {
+  IndexedMesh mesh = quad_and_triangle_with_uvs();
+  mesh.face_uvs[0].clear();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 0 has no texture coordinates, but face 1 has: give every face "
+                        "texture coordinates, or none"));
+  mesh = quad_and_triangle_with_uvs();
+  mesh.face_uvs.pop_back();  // fewer lists than faces
+  EXPECT_THAT(validation_message(mesh), HasSubstr("face 1 has no texture coordinates, but face 0"));
+}
+
+TEST(ValidateIndexedMesh, RejectsAUvCountOtherThanTheCornerCount) {
+  IndexedMesh mesh = quad_and_triangle_with_uvs();
+  mesh.face_uvs[1].pop_back();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 1 has 3 corners but 2 texture coordinates"));
+}
+
+TEST(ValidateIndexedMesh, RejectsNonFiniteUv) {
+  IndexedMesh mesh = quad_and_triangle_with_uvs();
+  mesh.face_uvs[0][2].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(validation_message(mesh),
+              HasSubstr("face 0 has a non-finite texture coordinate (0.5, nan) at corner 2"));
+}
+
+TEST(TriangulateQuads, EachTriangleKeepsTheUvsOfItsCornersInTheQuad) {
+  IndexedMesh mesh = quad_and_triangle_with_uvs();
+  mesh.vertices[2] = {1.2, 0, 1.2};  // cut along 1-3
+  const IndexedMesh cut = triangulate_quads(mesh);
+  ASSERT_EQ(cut.face_uvs.size(), 3u);
+  const auto& q = mesh.face_uvs[0];
+  EXPECT_EQ(cut.face_uvs[0], (std::vector<Eigen::Vector2d>{q[0], q[1], q[3]}));
+  EXPECT_EQ(cut.face_uvs[1], (std::vector<Eigen::Vector2d>{q[1], q[2], q[3]}));
+  EXPECT_EQ(cut.face_uvs[2], mesh.face_uvs[1]);  // the triangle's own, not the quad's
+  EXPECT_EQ(validation_message(cut), "");
+  EXPECT_TRUE(triangulate_quads(quad_and_triangle()).face_uvs.empty());
+}
+
 }  // namespace
 }  // namespace tissu
