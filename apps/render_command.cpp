@@ -1,10 +1,13 @@
 #include "apps/render_command.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "apps/stop_signals.hpp"
 #include "lib/progress.hpp"
 #include "lib/render_folder.hpp"
 
@@ -71,6 +74,8 @@ std::optional<Camera> command_camera(const RenderCommand& command) {
 }  // namespace
 
 int execute(const RenderCommand& command) {
+  // SIGINT and SIGTERM stop after the image in progress (apps/stop_signals.hpp)
+  const StopRequest stop = install_stop_signals();
   try {
     RenderSettings settings = command.settings;
     settings.enabled = true;
@@ -84,7 +89,14 @@ int execute(const RenderCommand& command) {
     if (!command.quiet)
       on_image = [&progress](int done, int total) { progress.rendered(done, total); };
     const RenderedRun run =
-        render_mesh_folder(command.mesh_dir, settings, command.frame_rate, out, on_image);
+        render_mesh_folder(command.mesh_dir, settings, command.frame_rate, out, on_image, stop);
+    if (run.stopped) {
+      const int signal_number = *stop.flag;
+      const bool mid_line = !command.quiet && isatty(STDERR_FILENO) == 1;
+      std::fprintf(stderr, "%stissu: stopped by %s: %d complete images in %s, no video\n",
+                   mid_line ? "\n" : "", signal_name(signal_number), run.images, out.c_str());
+      return stopped_exit_status(signal_number);
+    }
     if (!run.video_warning.empty()) {
       std::fprintf(stderr, "tissu: warning: %s\n", run.video_warning.c_str());
     }

@@ -1,10 +1,12 @@
 #include "apps/run_command.hpp"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <string>
 
+#include "apps/stop_signals.hpp"
 #include "lib/progress.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
@@ -22,7 +24,34 @@ void add_run_options(CLI::App& app, RunCommand& command) {
   app.add_flag("-q,--quiet", command.quiet, "no progress output");
 }
 
+namespace {
+
+/// The one line saying what a run stopped by a signal left, e.g. "stopped by SIGTERM after frame
+/// 12 of 60: stats.csv and the meshes of frames 0 to 12 are complete in out/curtain".
+std::string stopped_message(int signal_number, const RunResult& result, int frame_count,
+                            const Scenario& scenario, const std::filesystem::path& dir) {
+  std::string text = std::string("stopped by ") + signal_name(signal_number);
+  const std::string frames = "frames 0 to " + std::to_string(result.frames_done);
+  if (result.frames_done < frame_count) {
+    text += " after frame " + std::to_string(result.frames_done) + " of " +
+            std::to_string(frame_count) + ": stats.csv" +
+            (scenario.output.write_meshes ? " and the meshes" : "") + " of " + frames +
+            " are complete in " + dir.string();
+    if (scenario.render.enabled)
+      text += "; nothing rendered" +
+              std::string(scenario.output.write_meshes ? " (tissu render renders the meshes)" : "");
+  } else {
+    text += " while rendering: " + frames + " are complete in " + dir.string() + ", with " +
+            std::to_string(result.images) + " images and no video";
+  }
+  return text;
+}
+
+}  // namespace
+
 int execute(const RunCommand& command) {
+  // SIGINT and SIGTERM stop the run after its last whole frame (apps/stop_signals.hpp)
+  const StopRequest stop = install_stop_signals();
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
     for (const std::string& note : scenario.notes)
@@ -33,6 +62,7 @@ int execute(const RunCommand& command) {
     options.output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                                     : std::filesystem::path(command.output_dir);
     options.frames = command.frames;
+    options.stop = stop;
     ProgressReporter progress = stderr_progress();
     if (!command.quiet) {
       options.on_frame = [&progress](const FrameStats& row) { progress(row); };
@@ -51,6 +81,16 @@ int execute(const RunCommand& command) {
     if (!result.ok) {
       std::fprintf(stderr, "tissu: simulation failed at %s\n", result.failure.c_str());
       return 2;
+    }
+    if (result.stopped) {
+      const int signal_number = *stop.flag;
+      // a progress bar is left mid-line on a terminal
+      const bool mid_line = !command.quiet && isatty(STDERR_FILENO) == 1;
+      std::fprintf(stderr, "%stissu: %s\n", mid_line ? "\n" : "",
+                   stopped_message(signal_number, result, options.frames.value_or(scenario.frames),
+                                   scenario, options.output_dir)
+                       .c_str());
+      return stopped_exit_status(signal_number);
     }
     if (!command.quiet) {
       std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,

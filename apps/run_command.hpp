@@ -20,7 +20,8 @@ struct RunCommand {
 void add_run_options(CLI::App& app, RunCommand& command);
 
 /// Loads and runs the scenario; prints errors as one line on stderr. Returns the exit status:
-/// 0 on success, 1 for bad input, 2 when the simulation failed.
+/// 0 on success, 1 for bad input or a file that cannot be written (a full disk), 2 when the
+/// simulation failed, 130 or 143 when SIGINT or SIGTERM stopped it (after its last whole frame).
 int execute(const RunCommand& command);
 
 /// A demo program's main: --scenario (defaulting to `scenario`) plus the run options, output to

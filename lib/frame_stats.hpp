@@ -3,7 +3,8 @@
 /// One row of stats.csv.
 
 #include <filesystem>
-#include <fstream>
+
+#include "lib/atomic_file.hpp"
 
 namespace tissu {
 
@@ -32,14 +33,20 @@ struct FrameStats {
   int boundary_edges = 0;     ///< edges with a face on one side only, tears included
 };
 
-/// Writes stats.csv: a header line, then one line per frame, flushed as it goes.
+/// Writes stats.csv: a header line, then one line per frame, each handed to the operating system
+/// as it is written (AppendFile), so that the file always ends with a whole row: a killed process
+/// loses no row it wrote, a full disk none but the one it refused.
 class StatsCsv {
  public:
+  /// Creates `file` with its header line. Throws FileWriteError if it cannot be written.
   explicit StatsCsv(const std::filesystem::path& file);
+  /// Appends `row`. Throws FileWriteError if the disk refuses it, std::runtime_error naming the
+  /// file, the frame and the column if a value is not finite (a row of inf or NaN is never
+  /// written: the driver stops a diverging run before it records the frame).
   void write(const FrameStats& row);
 
  private:
-  std::ofstream m_out;
+  AppendFile m_file;
 };
 
 }  // namespace tissu

@@ -46,9 +46,14 @@ std::vector<std::filesystem::path> frame_mesh_files(const std::filesystem::path&
 RenderedRun render_mesh_folder(const std::filesystem::path& mesh_dir,
                                const RenderSettings& settings, double images_per_second,
                                const std::filesystem::path& output_dir,
-                               const std::function<void(int, int)>& on_image) {
+                               const std::function<void(int, int)>& on_image, StopRequest stop) {
   std::vector<RenderFrame> frames;
   for (const std::filesystem::path& file : frame_mesh_files(mesh_dir)) {
+    if (stop.requested()) {
+      RenderedRun stopped;
+      stopped.stopped = true;
+      return stopped;
+    }
     frames.push_back(RenderFrame{read_mesh(file), {}, {}});
     frames.back().frame = frame_number(file);  // its image is named like its mesh
   }
@@ -56,7 +61,7 @@ RenderedRun render_mesh_folder(const std::filesystem::path& mesh_dir,
   const std::string stem =
       std::filesystem::absolute(mesh_dir).lexically_normal().filename().string();
   return render_frames(frames, settings, images_per_second, output_dir,
-                       stem.empty() ? "frames" : stem, on_image);
+                       stem.empty() ? "frames" : stem, on_image, stop);
 }
 
 }  // namespace tissu

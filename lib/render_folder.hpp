@@ -15,10 +15,12 @@ std::vector<std::filesystem::path> frame_mesh_files(const std::filesystem::path&
 
 /// Renders every frame mesh of `mesh_dir` into output_dir as render_frames() does, each image
 /// numbered as its mesh (frame_00010.obj gives frame_00010.png), the video named after the
-/// folder. Throws MeshError when a mesh cannot be read.
+/// folder. Throws MeshError when a mesh cannot be read. Checks `stop` between meshes read and as
+/// render_frames() does: when it is requested, returns with stopped = true.
 RenderedRun render_mesh_folder(const std::filesystem::path& mesh_dir,
                                const RenderSettings& settings, double images_per_second,
                                const std::filesystem::path& output_dir,
-                               const std::function<void(int, int)>& on_image = {});
+                               const std::function<void(int, int)>& on_image = {},
+                               StopRequest stop = {});
 
 }  // namespace tissu

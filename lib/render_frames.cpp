@@ -26,7 +26,7 @@ Eigen::AlignedBox3d bounds_of(const std::vector<RenderFrame>& frames) {
 RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
                           double images_per_second, const std::filesystem::path& output_dir,
                           const std::string& video_stem,
-                          const std::function<void(int, int)>& on_image) {
+                          const std::function<void(int, int)>& on_image, StopRequest stop) {
   RenderedRun run;
   if (frames.empty()) return run;
   const RenderOptions& options = settings.options;
@@ -36,6 +36,10 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
   const int total = static_cast<int>(frames.size());
   std::vector<std::filesystem::path> images;
   for (int k = 0; k < total; ++k) {
+    if (stop.requested()) {
+      run.stopped = true;
+      return run;
+    }
     RenderScene scene;
     scene.mesh = &frames[k].mesh;
     scene.pinned = frames[k].pinned;
@@ -52,7 +56,8 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
   if (settings.video) {
     const VideoResult video =
         encode_video(images, images_per_second, output_dir / (video_stem + ".mp4"),
-                     output_dir / (video_stem + ".gif"));
+                     output_dir / (video_stem + ".gif"), stop);
+    run.stopped = video.stopped;
     run.video = video.made;
     run.video_warning = video.warning;
   }

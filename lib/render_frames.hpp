@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lib/scenario/scenario.hpp"
+#include "lib/stop_request.hpp"
 #include "topology/indexed_mesh.hpp"
 
 namespace tissu {
@@ -28,16 +29,20 @@ struct RenderedRun {
   int images = 0;             ///< PNG files written, frame_NNNNN.png named by RenderFrame::frame
   bool video = false;         ///< whether the MP4 and GIF were made
   std::string video_warning;  ///< why not, when video was asked for but not made
+  bool stopped = false;       ///< `stop` was requested: the images so far written, no video
 };
 
 /// Writes each of `frames` to output_dir/frame_NNNNN.png, NNNNN its RenderFrame::frame (5 digits
 /// or more), with settings.camera, or a camera that frames the bounding box of every frame's cloth
 /// (not its obstacles), then, if settings.video, output_dir/<video_stem>.mp4 and .gif of those
 /// images in the order given, at `images_per_second`. Calls on_image(done, total) after each
-/// image.
+/// image. Checks `stop` before each image and while the video is made: when it is requested,
+/// returns with stopped = true, every image written so far complete, and no video. Every file is
+/// written whole or not at all (lib/atomic_file.hpp); FileWriteError when the disk refuses one.
 RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSettings& settings,
                           double images_per_second, const std::filesystem::path& output_dir,
                           const std::string& video_stem,
-                          const std::function<void(int, int)>& on_image = {});
+                          const std::function<void(int, int)>& on_image = {},
+                          StopRequest stop = {});
 
 }  // namespace tissu

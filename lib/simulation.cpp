@@ -37,7 +37,8 @@ struct FrameSteps {
   int self_contacts = 0;
   double collision_ms = 0.0;
   int tears = 0;
-  int tip_splits = 0;  ///< edges bisected around crack tips
+  int tip_splits = 0;    ///< edges bisected around crack tips
+  bool stopped = false;  ///< a stop was requested before all the frame's steps were made
 
   void add(StepStatus status, const StepWorkspace& workspace) {
     if (status == StepStatus::not_converged) ++unconverged;
@@ -139,13 +140,18 @@ std::optional<std::string> divergence_cause(StepStatus status, const CompiledClo
 /// limit by the recoil of the stretch it released). Stops at the first step that diverges
 /// (divergence_cause()); `cloth` then holds the state before that step (kept
 /// in `before_step`), on the model it was stepped with, while the complex still holds the
-/// previous frame's state or that of the last step that tore the cloth in this frame.
+/// previous frame's state or that of the last step that tore the cloth in this frame. Stops
+/// before a step when `stop` is requested, with steps.stopped set.
 std::optional<Divergence> step_frame(const Scenario& scenario, ClothComplex& lcc,
                                      CompiledCloth& cloth, StepWorkspace& workspace,
                                      TearStep& tearing, SpeedLimit& limit, State& before_step,
-                                     FrameSteps& steps) {
+                                     FrameSteps& steps, StopRequest stop) {
   const auto start = std::chrono::steady_clock::now();
   for (int sub = 0; sub < scenario.substeps; ++sub) {
+    if (stop.requested()) {
+      steps.stopped = true;
+      return std::nullopt;
+    }
     before_step = cloth.state;
     const StepStatus status = step(cloth.model, scenario.solver, cloth.state, workspace);
     steps.add(status, workspace);
@@ -245,21 +251,31 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     if (to_render.empty()) return;
     const RenderedRun rendered =
         render_frames(to_render, render, scenario.frame_rate / render.every, options.output_dir,
-                      scenario.name, options.on_image);
+                      scenario.name, options.on_image, options.stop);
     result.images = rendered.images;
     result.video_warning = rendered.video_warning;
+    result.stopped = result.stopped || rendered.stopped;
   };
 
-  // stage 3 of a frame: statistics, meshes, images and callbacks, all read from the complex
+  // stage 3 of a frame: meshes, statistics, images and callbacks, all read from the complex.
+  // The mesh goes first and the stats row, which records the frame, after it: a run killed
+  // between the two (SIGKILL) leaves a mesh without its row, never a row without its mesh.
   auto record = [&](int frame, const FrameSteps& steps, Adaptation changes) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits + steps.tip_splits;
     row.merges = changes.merges;
-    stats.write(row);
+    std::filesystem::path mesh_file;
     if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
-      write_mesh(frame_file(options.output_dir, "frame_", frame, output.mesh_format),
-                 current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
+      mesh_file = frame_file(options.output_dir, "frame_", frame, output.mesh_format);
+      write_mesh(mesh_file, current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
                  output.mesh_format);
+    }
+    try {
+      stats.write(row);
+    } catch (...) {  // the frame is not recorded: its mesh goes too, so that the two still agree
+      std::error_code ignored;
+      if (!mesh_file.empty()) std::filesystem::remove(mesh_file, ignored);
+      throw;
     }
     if (render.enabled && frame % render.every == 0) {
       to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
@@ -277,8 +293,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   State before_step;
   for (int frame = 1; frame <= frame_count; ++frame) {
     FrameSteps steps;
-    if (const auto divergence =
-            step_frame(scenario, lcc, cloth, workspace, tearing, limit, before_step, steps)) {
+    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, tearing, limit,
+                                           before_step, steps, options.stop)) {
       write_back(cloth, cloth.state, lcc);  // the state before the step that diverged
       const auto last_good =
           last_good_file(options.output_dir, frame, divergence->substep, output.mesh_format);
@@ -287,6 +303,10 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       result.ok = false;
       result.failure = divergence_message(scenario, frame, *divergence, cloth, last_good);
       render_recorded(result);
+      return result;
+    }
+    if (steps.stopped) {  // the frame in progress is dropped; nothing is rendered after a stop
+      result.stopped = true;
       return result;
     }
     if (steps.unconverged > 0 && result.unconverged_steps == 0 && options.on_warning) {

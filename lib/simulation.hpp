@@ -11,6 +11,7 @@
 #include "lib/frame_stats.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/shape_distance.hpp"
+#include "lib/stop_request.hpp"
 
 namespace tissu {
 
@@ -23,6 +24,10 @@ struct RunOptions {
   std::function<void(const std::string&)> on_warning;
   /// when set, called with the frame number and the cloth's surface after each frame, frame 0 too
   std::function<void(int, const MaterialSurface&)> on_surface;
+  /// checked before every solver step and every image: once requested, the run ends with the last
+  /// whole frame (the frame in progress is dropped, nothing of it written), renders nothing more,
+  /// and returns with stopped = true
+  StopRequest stop;
 };
 
 struct RunResult {
@@ -32,10 +37,14 @@ struct RunResult {
   int unconverged_steps = 0;  ///< steps that missed their solver's tolerance, in all frames
   int images = 0;             ///< PNG frames rendered
   std::string video_warning;  ///< set when a video was asked for and not made
+  bool stopped = false;       ///< ended early because options.stop was requested
 };
 
 /// Runs `scenario`. Bad meshes or pins throw (MeshError, PinError) before the first step; a solver
-/// failure stops the run with ok = false after writing the last good state. When rendering is on,
+/// failure stops the run with ok = false after writing the last good state. Each frame writes its
+/// mesh (when due), then its stats.csv row, each whole or not at all (lib/atomic_file.hpp): a
+/// frame is recorded when its row is in stats.csv, and every row's mesh is complete then. A file
+/// the disk refuses throws FileWriteError naming it, ending the run. When rendering is on,
 /// the frames are kept in memory and rendered after the run (a failed one too), so that the
 /// default camera frames the whole run. Runs on the calling thread's OpenMP thread count: the
 /// library sets no process state, so Scenario::threads is for the program to apply (the tissu

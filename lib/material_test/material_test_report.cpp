@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "lib/atomic_file.hpp"
 #include "lib/render/external_program.hpp"
 
 namespace tissu {
@@ -15,11 +17,21 @@ double target_shear_modulus_pa(double e_pa, double nu) {
   return e_pa / (2.0 * (1.0 + nu));
 }
 
-std::ofstream open_for_writing(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+/// A report's text, built in memory and written whole or not at all (lib/atomic_file.hpp).
+std::ostringstream report_text() {
+  std::ostringstream out;
   out.precision(6);
   return out;
+}
+
+/// Whether `file` ends with a PNG's IEND chunk (length 0, "IEND", its CRC): what an image cut
+/// short by a full disk lacks. (gnuplot's exit status does not tell.)
+bool ends_like_a_png(const std::filesystem::path& file) {
+  static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return bytes.size() > iend.size() &&
+         bytes.compare(bytes.size() - iend.size(), iend.size(), iend) == 0;
 }
 
 std::string percent(double measured, double target) {
@@ -79,7 +91,7 @@ void write_material_tables(const std::vector<MaterialTestRow>& rows,
                            const MaterialTestOptions& options, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const double e = options.youngs_modulus_pa;
-  std::ofstream csv = open_for_writing(dir / "material_test.csv");
+  std::ostringstream csv = report_text();
   csv << "formulation,sheet,cells,target_E_pa,target_nu,target_G_pa,E_warp_pa,E_weft_pa,"
          "E_diagonal_pa,nu_warp,nu_weft,nu_diagonal,G_pa,E_warp_error,E_diagonal_error,"
          "nu_warp_error,G_error,strip_E_pa,strip_nu\n";
@@ -100,7 +112,9 @@ void write_material_tables(const std::vector<MaterialTestRow>& rows,
     csv << '\n';
   }
 
-  std::ofstream md = open_for_writing(dir / "material_test.md");
+  write_file_atomically(dir / "material_test.csv", csv.str(), "material test table");
+
+  std::ostringstream md = report_text();
   md << "Target E = " << e << " Pa, thickness " << options.thickness_m << " m, " << options.cells
      << " cells a side. E and G: error relative to the target; nu: the measured value. The "
         "first columns come from the homogenised stiffness tensor; the strip pull is a literal "
@@ -134,6 +148,7 @@ void write_material_tables(const std::vector<MaterialTestRow>& rows,
        << ".";
   }
   md << "\n";
+  write_file_atomically(dir / "material_test.md", md.str(), "material test table");
 }
 
 std::string plot_material_tests(const std::vector<MaterialTestRow>& rows,
@@ -141,8 +156,9 @@ std::string plot_material_tests(const std::vector<MaterialTestRow>& rows,
                                 const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const std::filesystem::path script = dir / "material_test.gp";
+  PendingFile png(dir / "material_test.png", "material test plot");  // gnuplot writes it
   {
-    std::ofstream gp = open_for_writing(script);
+    std::ostringstream gp = report_text();
     // one data block per formulation and sheet: target nu, nu warp, E warp / E,
     // E diagonal / E, G / G target
     std::map<std::string, std::ostringstream> blocks;
@@ -166,7 +182,10 @@ std::string plot_material_tests(const std::vector<MaterialTestRow>& rows,
       gp << "$s" << i << " << EOD\n" << blocks[order[i]].str() << "EOD\n";
     }
     gp << "set terminal pngcairo noenhanced size 1500,1000 font 'sans,11'\n"
-       << "set output '" << (dir / "material_test.png").string() << "'\n"
+       // tissu passes `output`, a temporary name renamed once the image is whole; run by hand,
+       // the script writes the PNG beside itself
+       << "if (!exists(\"output\")) output = '" << png.target().string() << "'\n"
+       << "set output output\n"
        << "set multiplot layout 2,2 margins 0.05,0.74,0.07,0.92 spacing 0.07,0.1 title "
        << "'Measured against target: " << options.cells
        << " cells a side, E = " << options.youngs_modulus_pa << " Pa, h = " << options.thickness_m
@@ -187,11 +206,17 @@ std::string plot_material_tests(const std::vector<MaterialTestRow>& rows,
     panel("Young's modulus along the diagonal / target", 4, "1");
     panel("shear modulus / target E / (2 (1 + nu))", 5, "1");
     gp << "unset multiplot\n";
+    write_file_atomically(script, gp.str(), "gnuplot script");
   }
   const std::optional<std::filesystem::path> gnuplot = find_on_path("gnuplot");
   if (!gnuplot) return "no gnuplot on the PATH: " + script.string() + " written, no PNG";
-  const ProgramResult result = run_program(*gnuplot, {script.string()});
+  const ProgramResult result =
+      run_program(*gnuplot, {"-e", "output='" + png.temporary().string() + "'", script.string()});
   if (result.status != 0) return "gnuplot failed: " + last_output(result.errors);
+  if (!ends_like_a_png(png.temporary()))
+    return "gnuplot did not write a whole " + png.target().string() +
+           " (is the disk full?): " + last_output(result.errors);
+  png.commit();
   return "";
 }
 

@@ -80,6 +80,14 @@ std::string numbered_mesh_bytes(const NumberedMesh& in) {
     out.put_size(face.size());
     for (int v : face) out.put(static_cast<std::int32_t>(v));
   }
+  out.put_size(in.mesh.face_uvs.size());
+  for (const std::vector<Eigen::Vector2d>& uvs : in.mesh.face_uvs) {
+    out.put_size(uvs.size());
+    for (const Eigen::Vector2d& uv : uvs) {
+      out.put(uv.x());
+      out.put(uv.y());
+    }
+  }
   out.put_size(in.mesh_vertex_of_file_vertex.size());
   for (int v : in.mesh_vertex_of_file_vertex) out.put(static_cast<std::int32_t>(v));
   out.put_size(in.no_numbering_reason.size());
@@ -99,6 +107,14 @@ NumberedMesh numbered_mesh_from_bytes(const std::string& bytes) {
   for (std::vector<int>& face : out.mesh.faces) {
     face.resize(in.get_count(sizeof(std::int32_t)));
     for (int& v : face) v = in.get<std::int32_t>();
+  }
+  out.mesh.face_uvs.resize(in.get_count(sizeof(std::uint64_t)));
+  for (std::vector<Eigen::Vector2d>& uvs : out.mesh.face_uvs) {
+    uvs.resize(in.get_count(2 * sizeof(double)));
+    for (Eigen::Vector2d& uv : uvs) {
+      const double u = in.get<double>(), v = in.get<double>();
+      uv = {u, v};
+    }
   }
   out.mesh_vertex_of_file_vertex.resize(in.get_count(sizeof(std::int32_t)));
   for (int& v : out.mesh_vertex_of_file_vertex) v = in.get<std::int32_t>();

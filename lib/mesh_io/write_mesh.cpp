@@ -1,10 +1,11 @@
 #include "lib/mesh_io/write_mesh.hpp"
 
 #include <Eigen/Geometry>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "lib/atomic_file.hpp"
 #include "lib/mesh_io/mesh_encoding.hpp"
 
 namespace tissu {
@@ -45,17 +46,30 @@ void check_faces(const std::filesystem::path& file, const IndexedMesh& mesh) {
   }
 }
 
+/// Refuses a non-finite coordinate: a file holding inf or NaN is no mesh any reader can use (OBJ
+/// readers drop or merge such vertices), and it means that whatever made it went wrong.
+void check_finite(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& points,
+                  const char* what) {
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if (points[v].allFinite()) continue;
+    std::ostringstream text;
+    text << "vertex " << v << " has the " << what << " (" << points[v].x() << ", " << points[v].y()
+         << ", " << points[v].z() << "), which is not finite";
+    fail(file, text.str());
+  }
+}
+
+/// The file's bytes go to a temporary beside it, renamed over it once complete: a full disk or a
+/// killed process never leaves a truncated mesh under its name (lib/atomic_file.hpp).
 void write_file(const std::filesystem::path& file, const std::string& contents) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) fail(file, "cannot open it for writing");
-  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-  out.close();
-  if (out.fail()) fail(file, "writing failed (is the disk full?)");
+  write_file_atomically(file, contents, "mesh");
 }
 
 void write(const std::filesystem::path& file, const IndexedMesh& mesh, const VertexRestData* rest,
            MeshFormat format) {
   check_faces(file, mesh);
+  check_finite(file, mesh.vertices, "position");
+  if (rest) check_finite(file, rest->rest_m, "rest position");
   write_file(file, format == MeshFormat::obj ? obj_text(mesh, rest) : ply_bytes(mesh, rest));
 }
 

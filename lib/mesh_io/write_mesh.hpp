@@ -62,9 +62,15 @@ std::vector<Eigen::Vector3d> rest_texture_coordinates(const std::vector<Eigen::V
 /// A comment at the top of the file says what each field holds. Without UVs and without `rest`,
 /// the file holds positions and faces only.
 ///
-/// Throws std::runtime_error naming the file if a face refers to a vertex out of range, has
-/// fewer than 3 or more than 255 vertices (127 with UVs), the mesh has UVs but not one per corner
-/// of every face, `rest` does not have one entry per vertex, or the file cannot be written.
+/// The file is written whole or not at all: through a temporary file beside it, renamed over it
+/// once complete (lib/atomic_file.hpp), so that a full disk or a killed process never leaves a
+/// truncated mesh under its name.
+///
+/// Throws std::runtime_error naming the file, and writes nothing, if a face refers to a vertex out
+/// of range, has fewer than 3 or more than 255 vertices (127 with UVs), the mesh has UVs but not
+/// one per corner of every face, `rest` does not have one entry per vertex, or a position or rest
+/// position is not finite (inf or NaN); FileWriteError (a std::runtime_error) naming the file and
+/// the cause if it cannot be written.
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh, MeshFormat format);
 void write_mesh(const std::filesystem::path& file, const IndexedMesh& mesh,
                 const RestCoordinates& rest, MeshFormat format);

@@ -1,6 +1,8 @@
 #include "lib/render/external_program.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,7 +33,8 @@ std::optional<fs::path> find_on_path(const std::string& name) {
   return std::nullopt;
 }
 
-ProgramResult run_program(const fs::path& program, const std::vector<std::string>& arguments) {
+ProgramResult run_program(const fs::path& program, const std::vector<std::string>& arguments,
+                          StopRequest stop) {
   ProgramResult result;
   int pipe_ends[2];
   if (pipe(pipe_ends) != 0) {
@@ -63,8 +66,17 @@ ProgramResult run_program(const fs::path& program, const std::vector<std::string
     return result;
   }
   char buffer[4096];
-  ssize_t n = 0;
-  while ((n = read(pipe_ends[0], buffer, sizeof buffer)) != 0) {
+  for (;;) {
+    if (stop.requested() && !result.stopped) {  // once: it then ends, closing its stderr
+      kill(pid, SIGTERM);
+      result.stopped = true;
+    }
+    pollfd readable{pipe_ends[0], POLLIN, 0};
+    const int ready = poll(&readable, 1, 100);  // ms, the delay before a stop is seen
+    if (ready == 0 || (ready < 0 && errno == EINTR)) continue;
+    if (ready < 0) break;
+    const ssize_t n = read(pipe_ends[0], buffer, sizeof buffer);
+    if (n == 0) break;  // end of file: the program closed its stderr, usually by ending
     if (n > 0)
       result.errors.append(buffer, static_cast<std::size_t>(n));
     else if (errno != EINTR)

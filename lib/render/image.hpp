@@ -17,8 +17,9 @@ struct Image {
   const std::uint8_t* pixel(int x, int y) const { return rgb.data() + 3 * (y * width + x); }
 };
 
-/// Writes `image` to `file` as an 8-bit RGB PNG, overwriting it. Throws std::invalid_argument if
-/// the image's size and data disagree, std::runtime_error naming the file if it cannot be written.
+/// Writes `image` to `file` as an 8-bit RGB PNG, overwriting it, whole or not at all (through a
+/// temporary file, lib/atomic_file.hpp). Throws std::invalid_argument if the image's size and data
+/// disagree, FileWriteError (a std::runtime_error) naming the file if it cannot be written.
 void write_png(const std::filesystem::path& file, const Image& image);
 
 }  // namespace tissu

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 
 #include "lib/mesh_io/read_mesh.hpp"
@@ -271,6 +272,28 @@ TEST(WriteMesh, FaceOfTwoVerticesThrowsNamingIt) {
     FAIL() << "expected std::runtime_error";
   } catch (const std::runtime_error& e) {
     EXPECT_THAT(e.what(), HasSubstr("face 1 has 2 vertices"));
+  }
+}
+
+TEST(WriteMesh, NonFinitePositionsAreRefusedNamingTheVertexAndNothingIsWritten) {
+  // whatever the integrator did, no file holds inf or NaN (OBJ readers would merge such vertices)
+  for (const MeshFormat format : {MeshFormat::obj, MeshFormat::ply}) {
+    const fs::path dir = test_dir();
+    const fs::path file = dir / (std::string("blown_up.") + extension(format));
+    CutSheet s = cut_sheet();
+    s.mesh.vertices[5].y() = std::numeric_limits<double>::infinity();
+    EXPECT_THAT([&] { write_mesh(file, s.mesh, s.rest, format); },
+                ::testing::ThrowsMessage<std::runtime_error>(
+                    HasSubstr(file.string() + ": cannot write mesh: vertex 5 has the position (")));
+    s = cut_sheet();
+    s.rest.rest_m[2].x() = std::nan("");
+    EXPECT_THAT([&] { write_mesh(file, s.mesh, s.rest, format); },
+                ::testing::ThrowsMessage<std::runtime_error>(
+                    HasSubstr("vertex 2 has the rest position (")));
+    s.mesh.vertices[0].z() = -std::numeric_limits<double>::infinity();
+    EXPECT_THAT([&] { write_mesh(file, s.mesh, format); },
+                ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("which is not finite")));
+    EXPECT_TRUE(fs::is_empty(dir)) << "something was written";
   }
 }
 

@@ -3,14 +3,19 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lib/atomic_file.hpp"
 #include "lib/render/image.hpp"
+#include "tests/file_size_limit.hpp"
 #include "tests/test_temp_dir.hpp"
 #include "tests/video_probe.hpp"
 
@@ -123,12 +128,60 @@ TEST(EncodeVideo, ReportsTheErrorOutputOfAFailingFfmpeg) {
   if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
   const fs::path dir = test_dir();
   const std::vector<fs::path> frames = write_frames(dir, 3);
-  // a folder cannot be written as a file
-  fs::create_directories(dir / "taken.mp4");
-  const VideoResult result = encode_video(frames, 25.0, dir / "taken.mp4", "");
+  // ffmpeg cannot create a file in a folder that does not exist
+  const VideoResult result = encode_video(frames, 25.0, dir / "missing" / "clip.mp4", "");
   EXPECT_FALSE(result.made);
   EXPECT_THAT(result.warning, HasSubstr("ffmpeg failed to make the MP4"));
   EXPECT_THAT(result.warning, HasSubstr("exit status"));
+}
+
+/// The names in `dir` other than the images write_frames() put there.
+std::vector<std::string> non_frames_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("frame_", 0) != 0) names.push_back(name);
+  }
+  return names;
+}
+
+TEST(EncodeVideo, AVideoThatCannotTakeItsPlaceIsAWarningAndLeavesNoTemporary) {
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = test_dir();
+  const std::vector<fs::path> frames = write_frames(dir, 3);
+  fs::create_directories(dir / "taken.mp4");  // a folder cannot be replaced by a file
+  const VideoResult result = encode_video(frames, 25.0, dir / "taken.mp4", "");
+  EXPECT_FALSE(result.made);
+  EXPECT_THAT(result.warning, HasSubstr("taken.mp4: cannot write mp4 video: "));
+  EXPECT_EQ(non_frames_in(dir), std::vector<std::string>{"taken.mp4"});
+}
+
+TEST(EncodeVideo, AVideoTheDiskRefusesIsAnErrorNamingItAndLeavesNothing) {
+  // a file size limit fails ffmpeg's writes with EFBIG, as a full disk fails them with ENOSPC
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = test_dir();
+  const std::vector<fs::path> frames = write_frames(dir, 12);
+  try {
+    const test::FileSizeLimit limit(1024);  // ffmpeg inherits it, and SIGXFSZ ignored
+    encode_video(frames, 10.0, dir / "clip.mp4", dir / "clip.gif");
+    FAIL() << "a video was made under a 1 KiB file size limit";
+  } catch (const FileWriteError& e) {
+    EXPECT_THAT(e.what(), HasSubstr((dir / "clip.mp4").string() +
+                                    ": cannot write mp4 video: " + std::strerror(EFBIG)));
+  }
+  EXPECT_TRUE(non_frames_in(dir).empty());
+}
+
+TEST(EncodeVideo, AStopRequestEndsFfmpegAndMakesNothing) {
+  if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = test_dir();
+  const std::vector<fs::path> frames = write_frames(dir, 12);
+  const volatile std::sig_atomic_t stop_signal = SIGTERM;  // already requested
+  const VideoResult result =
+      encode_video(frames, 10.0, dir / "clip.mp4", dir / "clip.gif", StopRequest{&stop_signal});
+  EXPECT_TRUE(result.stopped);
+  EXPECT_FALSE(result.made);
+  EXPECT_TRUE(non_frames_in(dir).empty());
 }
 
 TEST(EncodeVideo, RejectsANonPositiveFrameRate) {

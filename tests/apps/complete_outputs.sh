@@ -1,0 +1,33 @@
+# Sourced by the fault tests: checks that every output file in a folder is whole.
+# usage: check_complete_outputs DIR   (prints what is wrong and returns 1, or returns 0)
+check_complete_outputs() {
+  local dir=$1 file bad=0
+  # temporaries (.<name>.tmp<pid>_<n>) are renamed or removed, never left
+  if [ -n "$(find "$dir" -maxdepth 1 -name '.*' -type f)" ]; then
+    echo "temporary files left: $(find "$dir" -maxdepth 1 -name '.*' -type f)"; bad=1
+  fi
+  # stats.csv: a header and whole rows of 19 fields, ending with a newline
+  if [ -e "$dir/stats.csv" ]; then
+    if [ -s "$dir/stats.csv" ] && [ "$(tail -c 1 "$dir/stats.csv" | od -An -c | tr -d ' ')" != '\n' ]; then
+      echo "stats.csv does not end with a newline"; bad=1
+    fi
+    if awk -F, 'NF != 19 { exit 1 }' "$dir/stats.csv"; then :; else
+      echo "stats.csv has a row without 19 fields: $(awk -F, 'NF != 19' "$dir/stats.csv" | head -1)"; bad=1
+    fi
+  fi
+  # OBJ meshes end with their last face line
+  for file in "$dir"/frame_*.obj "$dir"/last_good_frame_*.obj; do
+    [ -e "$file" ] || continue
+    if [ "$(tail -n 1 "$file" | cut -c1-2)" != "f " ] || [ "$(tail -c 1 "$file" | od -An -c | tr -d ' ')" != '\n' ]; then
+      echo "$file is cut short: $(tail -c 60 "$file")"; bad=1
+    fi
+  done
+  # PNG images end with their IEND chunk
+  for file in "$dir"/frame_*.png; do
+    [ -e "$file" ] || continue
+    if [ "$(tail -c 12 "$file" | od -An -tx1 | tr -d ' \n')" != "0000000049454e44ae426082" ]; then
+      echo "$file is cut short"; bad=1
+    fi
+  done
+  return $bad
+}

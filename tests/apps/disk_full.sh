@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Runs tissu with writes the disk refuses: each run must stop with exit status 1 and one line on
+# stderr naming the file it could not write, and leave every file in its folder whole (no
+# truncated mesh, image or stats row, no temporary). The refusal is a file size limit (ulimit -f,
+# in KiB in bash; SIGXFSZ ignored, as tissu also does), which fails writes with EFBIG ("File too
+# large") where a full disk fails them with ENOSPC: the same code path, without a small file
+# system.  usage: disk_full.sh TISSU SCENARIO OUT_DIR
+set -u
+tissu=$1 scenario=$2 out=$3
+. "$(dirname "$0")/complete_outputs.sh"
+failures=0
+
+# usage: expect_refused NAME LIMIT_KIB EXPECTED_TEXT [tissu run options...]
+expect_refused() {
+  local name=$1 limit_kib=$2 text=$3
+  shift 3
+  local dir=$out/$name stderr status lines
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  stderr=$( (trap '' XFSZ; ulimit -f "$limit_kib"; exec "$tissu" run "$scenario" --out "$dir" --quiet "$@") 2>&1 >/dev/null)
+  status=$?
+  lines=$(printf '%s\n' "$stderr" | grep -c .)
+  echo "$name: exit status $status, stderr: $stderr"
+  local ok=1
+  [ "$status" -eq 1 ] || { echo "FAIL $name: expected exit status 1"; ok=0; }
+  [ "$lines" -eq 1 ] || { echo "FAIL $name: expected one line on stderr, got $lines"; ok=0; }
+  case "$stderr" in
+    *"$dir/$text"*) ;;
+    *) echo "FAIL $name: stderr does not contain: $dir/$text"; ok=0 ;;
+  esac
+  check_complete_outputs "$dir" || { echo "FAIL $name: an output is not whole"; ok=0; }
+  [ $ok -eq 1 ] || failures=$((failures + 1))
+}
+
+# the first frame's mesh (a 60 x 60 grid: about 400 kB) over a 64 KiB limit: nothing of it, and no
+# stats row for its frame
+expect_refused mesh 64 "frame_00000.obj: cannot write mesh: File too large" \
+  --set "cloth.grid.resolution=[60,60]"
+[ ! -e "$out/mesh/frame_00000.obj" ] || { echo "FAIL mesh: frame_00000.obj written"; failures=$((failures + 1)); }
+# stats.csv outgrows 2 KiB after a few frames: it ends with its last whole row
+expect_refused stats 2 "stats.csv: cannot write statistics: File too large" \
+  --frames 200 --set output.meshes=false
+# the same for binary PLY
+expect_refused ply 64 "frame_00000.ply: cannot write mesh: File too large" \
+  --set output.mesh_format=ply --set "cloth.grid.resolution=[60,60]"
+# a rendered image (about 3 kB) over a 1 KiB limit
+expect_refused png 1 "frame_00000.png: cannot write PNG image: File too large" \
+  --frames 1 --set output.meshes=false --set render.enabled=true --set render.video=false \
+  --set render.width=320 --set render.height=240
+
+[ $failures -eq 0 ] && echo ok
+exit $((failures > 0))
