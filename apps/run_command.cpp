@@ -4,11 +4,14 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "apps/stop_signals.hpp"
 #include "lib/progress.hpp"
+#include "lib/scenario/printable_text.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "lib/scenario/scenario_limits.hpp"
 #include "lib/simulation.hpp"
 #include "topology/indexed_mesh.hpp"
 #include "topology/pin_selection.hpp"
@@ -18,7 +21,7 @@ namespace tissu {
 void add_run_options(CLI::App& app, RunCommand& command) {
   app.add_option("-o,--out", command.output_dir, "output folder (default: out/<scenario name>)");
   app.add_option("-f,--frames", command.frames, "number of frames, instead of the scenario's")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, max_frames));
   app.add_option("-s,--set", command.overrides,
                  "override a scenario value, e.g. --set cloth.density=0.3 (repeatable)");
   app.add_flag("-q,--quiet", command.quiet, "no progress output");
@@ -109,9 +112,17 @@ int execute(const RunCommand& command) {
   return 1;
 }
 
+void print_errors_on_one_line(CLI::App& app, const std::string& program) {
+  app.failure_message([program](const CLI::App* failed, const CLI::Error& e) {
+    const std::string help = failed->get_parent() ? program + " " + failed->get_name() : program;
+    return program + ": " + printable_text(e.what(), 1000) + " (see " + help + " --help)\n";
+  });
+}
+
 int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,
              const std::string& output_dir) {
   CLI::App app{description};
+  print_errors_on_one_line(app, std::filesystem::path(argv[0]).filename().string());
   RunCommand run;
   run.scenario = scenario;
   run.output_dir = output_dir;

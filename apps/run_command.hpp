@@ -24,6 +24,10 @@ void add_run_options(CLI::App& app, RunCommand& command);
 /// simulation failed, 130 or 143 when SIGINT or SIGTERM stopped it (after its last whole frame).
 int execute(const RunCommand& command);
 
+/// Makes CLI11 print a command-line error as one line, "PROGRAM: what is wrong (see PROGRAM
+/// [SUBCOMMAND] --help)", instead of its two. Call before adding subcommands: they copy it.
+void print_errors_on_one_line(CLI::App& app, const std::string& program);
+
 /// A demo program's main: --scenario (defaulting to `scenario`) plus the run options, output to
 /// `output_dir` unless --out says otherwise; returns execute()'s exit status.
 int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   tissu::prefer_passive_openmp_waiting(argv);
   CLI::App app{"tissu: adaptive mass-spring cloth simulator"};
   app.require_subcommand(1);
+  tissu::print_errors_on_one_line(app, "tissu");
 
   tissu::RunCommand run;
   CLI::App* run_app = app.add_subcommand("run", "simulate a scenario file");

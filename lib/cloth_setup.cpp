@@ -51,7 +51,12 @@ void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
   if (scenario.cloth.grid) {
     read.mesh = make_grid_mesh(*scenario.cloth.grid);
   } else {
-    read = read_numbered_mesh(scenario.cloth.mesh_file);
+    // named like an obstacle's mesh: the scenario, the key, then the mesh file's own message
+    try {
+      read = read_numbered_mesh(scenario.cloth.mesh_file);
+    } catch (const MeshError& e) {
+      throw MeshError(scenario.file.string() + ": cloth.mesh.file: " + e.what());
+    }
   }
   // grid vertex ids are the mesh's; a file's are mapped to the mesh's
   const std::vector<PinSelector> pins =
@@ -64,6 +69,12 @@ void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
     build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
   } catch (const std::invalid_argument& e) {  // a cell the material's formulation does not define
     throw MeshError(scenario.file.string() + ": cloth: " + e.what());
+  } catch (const MeshError& e) {  // a grid's, or a file's after triangulation
+    throw MeshError(scenario.file.string() + ": " +
+                    (scenario.cloth.grid
+                         ? std::string("cloth.grid: ")
+                         : "cloth.mesh.file: " + scenario.cloth.mesh_file.string() + ": ") +
+                    e.what());
   }
   if (scenario.cloth.grid && scenario.cloth.grid->pleats > 0) {
     place_particles(grid_initial_positions(*scenario.cloth.grid), lcc);

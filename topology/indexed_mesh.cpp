@@ -104,8 +104,13 @@ void check_face(const IndexedMesh& mesh, std::size_t f, double min_area) {
   const double area = polygon_area(mesh, face);
   if (!(area > min_area)) {
     std::ostringstream message;
-    message << "face " << f << " (vertices " << face_ids(face) << ") is degenerate: its area "
-            << area << " is below " << min_area;
+    message << "face " << f << " (vertices " << face_ids(face) << ") is degenerate: ";
+    if (area == 0.0) {
+      message << "it has no area (its vertices lie on one line or at one point)";
+    } else {
+      message << "its area " << area << " is below " << min_area
+              << ", 1e-12 times the squared diagonal of the mesh's bounding box";
+    }
     fail(message);
   }
 }
@@ -281,6 +286,12 @@ void check_uvs(const IndexedMesh& mesh) {
 void validate_indexed_mesh(const IndexedMesh& mesh) {
   check_not_empty_and_finite(mesh);
   const double min_area = 1e-12 * bounding_box_diagonal_squared(mesh);
+  if (!std::isfinite(min_area)) {  // coordinates beyond ~1e154: face areas overflow to inf
+    std::ostringstream message;
+    message << "the mesh is too large to measure: its bounding box diagonal squared overflows a "
+               "double; coordinates must stay well below 1e150";
+    fail(message);
+  }
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     check_face(mesh, f, min_area);
   }

@@ -47,6 +47,13 @@ void validate_render_options(const RenderOptions& options) {
   check_size("width", options.width);
   check_size("height", options.height);
   check_range("samples", options.samples, 1, 16);
+  const long long samples = 1LL * options.width * options.height * options.samples;
+  if (samples > max_render_samples)
+    throw std::invalid_argument("render: an image of " + to_text(options.width) + " x " +
+                                to_text(options.height) + " pixels at " + to_text(options.samples) +
+                                " samples has " + to_text(samples) + " samples, more than the " +
+                                to_text(max_render_samples) +
+                                " an image may have (width x height x samples)");
   if (!(options.strain_range > 0.0) || !std::isfinite(options.strain_range))
     throw std::invalid_argument("render: strain range must be positive, got " +
                                 to_text(options.strain_range));

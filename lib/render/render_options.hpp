@@ -36,10 +36,16 @@ struct RenderOptions {
   float pin_size_px = 6.0f;        ///< pin square side (pixels), in [1, 64]
 };
 
+/// Most samples one image may have, width x height x samples: the multisample colour and depth
+/// buffers take 8 bytes per sample (1 GiB at the bound), and the single-sample buffers, the
+/// read-back and the PNG encoder as much again per pixel. 3840 x 2160 at 16 samples fits;
+/// 16384 x 16384 at 16 samples (34 GiB) does not.
+inline constexpr long long max_render_samples = 134'217'728;  // 2^27
+
 /// Throws std::invalid_argument, with a message starting "render: " that names the field and the
-/// value, when a size is odd, below 2 or above 16384, samples is outside [1, 16], a colour
-/// component is outside [0, 1], strain_range is not positive, or a line size, line opacity or pin
-/// size is out of range.
+/// value, when a size is odd, below 2 or above 16384, samples is outside [1, 16], width x height x
+/// samples is above max_render_samples, a colour component is outside [0, 1], strain_range is not
+/// positive, or a line size, line opacity or pin size is out of range.
 void validate_render_options(const RenderOptions& options);
 
 }  // namespace tissu

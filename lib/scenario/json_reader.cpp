@@ -2,14 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
+
+#include "lib/scenario/printable_text.hpp"
 
 namespace tissu {
 namespace {
 
+/// The value as JSON text, cut to about 60 bytes (at a character boundary).
 std::string describe(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  // replace: a string set by --set or built in code may hold bytes that are not UTF-8
+  std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() > 60) {
+    std::size_t cut = 57;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text = text.substr(0, cut) + "...";
+  }
   return text;
 }
 
@@ -31,6 +40,18 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 /// Largest edit distance at which a key is taken for a misspelling of another.
 std::size_t suggestion_distance(std::string_view key) {
   return std::max<std::size_t>(3, key.size() / 3);
+}
+
+/// Whether `value` is an integer in [min, max]; an unsigned one above INT64_MAX is not read as a
+/// negative long long.
+bool integer_within(const nlohmann::json& value, int min, int max) {
+  if (!value.is_number_integer()) return false;
+  if (value.is_number_unsigned() &&
+      value.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    return false;
+  }
+  const auto x = value.get<long long>();
+  return x >= min && x <= max;
 }
 
 std::string number_text(double x) {
@@ -65,7 +86,9 @@ JsonObjectReader object_reader(const nlohmann::json& value, const std::string& f
 }
 
 std::string JsonObjectReader::key_path(std::string_view key) const {
-  return m_path.empty() ? std::string(key) : m_path + "." + std::string(key);
+  // a user's key may hold control characters or be very long: printed on one line, cut
+  const std::string printable = printable_text(key, 100);
+  return m_path.empty() ? printable : m_path + "." + printable;
 }
 
 void JsonObjectReader::fail(std::string_view key, const std::string& expected) const {
@@ -116,10 +139,8 @@ int JsonObjectReader::integer(std::string_view key, int min, int max) {
       "an integer from " + std::to_string(min) +
       (max == std::numeric_limits<int>::max() ? " up" : " to " + std::to_string(max));
   const nlohmann::json& value = get(key, expected);
-  if (!value.is_number_integer()) fail(key, expected);
-  const auto x = value.get<long long>();
-  if (x < min || x > max) fail(key, expected);
-  return static_cast<int>(x);
+  if (!integer_within(value, min, max)) fail(key, expected);
+  return value.get<int>();
 }
 
 int JsonObjectReader::integer_or(std::string_view key, int fallback, int min, int max) {
@@ -202,10 +223,7 @@ std::vector<int> JsonObjectReader::integers(std::string_view key, int min) {
   if (!value.is_array() || value.empty()) fail(key, expected);
   std::vector<int> out;
   for (const auto& element : value) {
-    if (!element.is_number_integer() || element.get<long long>() < min ||
-        element.get<long long>() > std::numeric_limits<int>::max()) {
-      fail(key, expected);
-    }
+    if (!integer_within(element, min, std::numeric_limits<int>::max())) fail(key, expected);
     out.push_back(element.get<int>());
   }
   return out;

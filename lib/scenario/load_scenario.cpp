@@ -1,48 +1,113 @@
 #include <algorithm>
-#include <fstream>
+#include <charconv>
+#include <optional>
 #include <sstream>
 
+#include "lib/scenario/parse_strict_json.hpp"
+#include "lib/scenario/printable_text.hpp"
 #include "lib/scenario/read_cloth.hpp"
 #include "lib/scenario/read_collisions.hpp"
 #include "lib/scenario/read_render.hpp"
+#include "lib/scenario/read_scenario_text.hpp"
 #include "lib/scenario/read_tearing.hpp"
+#include "lib/scenario/scenario_limits.hpp"
 #include "solver/step.hpp"
 
 namespace tissu {
 namespace {
 
-/// Applies "a.b.c=value" to `root`; value is JSON if it parses, else a string.
+/// An array index written in a --set path: digits only, below `size`.
+std::optional<std::size_t> array_index(const std::string& key, std::size_t size) {
+  std::size_t index = 0;
+  const auto [end, error] = std::from_chars(key.data(), key.data() + key.size(), index);
+  if (key.empty() || error != std::errc() || end != key.data() + key.size() || index >= size) {
+    return std::nullopt;  // not a number, beyond size_t (99999999999999999999), or too large
+  }
+  return index;
+}
+
+/// Applies "a.b.c=value" to `root`; value is JSON if it parses, else a string. The assignment
+/// must be UTF-8 (a scenario's text is); its path and value together nest at most
+/// max_json_depth levels.
 void apply_override(nlohmann::json& root, const std::string& assignment, const std::string& file) {
+  const std::string shown = "--set " + printable_text(assignment);
+  if (const std::size_t bad = invalid_utf8_offset(assignment); bad != std::string::npos) {
+    throw ScenarioError(file + ": " + shown + ": byte " + std::to_string(bad) +
+                        " is not UTF-8 text; expected key.path=value in UTF-8");
+  }
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0) {
-    throw ScenarioError(file + ": --set " + assignment + ": expected key.path=value");
+    throw ScenarioError(file + ": " + shown + ": expected key.path=value");
   }
   const std::string path = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);
-  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
-  if (value.is_discarded()) value = text;
+  std::vector<std::string> keys;
+  for (std::size_t begin = 0;;) {
+    const std::size_t dot = std::min(path.find('.', begin), path.size());
+    keys.push_back(path.substr(begin, dot - begin));
+    if (keys.back().empty()) throw ScenarioError(file + ": " + shown + ": empty key in path");
+    if (keys.size() > static_cast<std::size_t>(max_json_depth)) {
+      throw ScenarioError(file + ": " + shown + ": a key path of more than " +
+                          std::to_string(max_json_depth) +
+                          " keys (the nesting limit of a scenario; a scenario needs about 6)");
+    }
+    if (dot == path.size()) break;
+    begin = dot + 1;
+  }
+  StrictJsonResult parsed =
+      parse_strict_json(text, file, printable_text(path), static_cast<int>(keys.size()));
+  nlohmann::json value =
+      parsed.syntax_error.empty() ? std::move(parsed.value) : nlohmann::json(text);
 
   nlohmann::json* node = &root;
   std::string walked;
-  std::istringstream keys(path);
-  for (std::string key; std::getline(keys, key, '.');) {
-    if (key.empty()) throw ScenarioError(file + ": --set " + assignment + ": empty key in path");
+  for (const std::string& key : keys) {
     if (node->is_array()) {
-      const bool numeric = key.find_first_not_of("0123456789") == std::string::npos;
-      if (!numeric || std::stoul(key) >= node->size()) {
-        throw ScenarioError(file + ": --set " + assignment + ": '" + walked +
+      const std::optional<std::size_t> index = array_index(key, node->size());
+      if (!index) {
+        throw ScenarioError(file + ": " + shown + ": '" + printable_text(walked) +
                             "' is an array; expected an index below " +
                             std::to_string(node->size()));
       }
-      node = &(*node)[std::stoul(key)];
+      node = &(*node)[*index];
     } else if (node->is_object() || node->is_null()) {
       node = &(*node)[key];
     } else {
-      throw ScenarioError(file + ": --set " + assignment + ": '" + walked + "' is not an object");
+      throw ScenarioError(file + ": " + shown + ": '" + printable_text(walked) +
+                          "' is not an object");
     }
     walked += (walked.empty() ? "" : ".") + key;
   }
   *node = std::move(value);
+}
+
+/// The scenario's "name", else the file's stem: a plain file name, since it names the output
+/// folder out/<name> and the files <name>.mp4 and <name>.gif in it.
+std::string read_name(JsonObjectReader& top, const std::filesystem::path& file) {
+  const bool given = top.has("name");
+  const std::string name = given ? top.string("name") : file.stem().string();
+  std::string wrong;
+  if (name.empty()) {
+    wrong = "it is empty";
+  } else if (name == "." || name == "..") {
+    wrong = "\"" + name + "\" names a folder";
+  } else if (name.find('/') != std::string::npos) {
+    wrong = "it holds a '/'";
+  } else if (name.size() > max_name_bytes) {
+    wrong = "it has " + std::to_string(name.size()) + " bytes, more than the " +
+            std::to_string(max_name_bytes) + " a name may have";
+  } else if (invalid_utf8_offset(name) != std::string::npos ||
+             std::any_of(name.begin(), name.end(),
+                         [](unsigned char c) { return c < 0x20 || c == 0x7F; })) {
+    wrong = "it holds control characters or bytes that are not UTF-8";
+  }
+  if (wrong.empty()) return name;
+  const std::string expected = "a plain file name (no '/', not \".\" or \"..\", at most " +
+                               std::to_string(max_name_bytes) +
+                               " bytes), as it names the output folder out/<name>";
+  if (given) top.fail("name", expected + "; " + wrong);
+  throw ScenarioError(top.file() + ": name: missing, and the file's stem \"" +
+                      printable_text(name) + "\" is not " + expected + "; give a \"name\"");
 }
 
 /// One of `values`, named in the scenario by to_string(value).
@@ -103,20 +168,29 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation, "integrator", Integrator::implicit_euler,
       {Integrator::symplectic_euler, Integrator::position_verlet, Integrator::implicit_euler,
        Integrator::projective_dynamics, Integrator::newton, Integrator::quasi_newton});
-  s.frames = simulation.integer("frames", 1, 10'000'000);
-  s.frame_rate = simulation.number_or("frame_rate", 30.0, positive(" (frames per second)"));
+  s.frames = simulation.integer("frames", 1, max_frames);
+  s.frame_rate = simulation.number_or(
+      "frame_rate", 30.0, between(min_frame_rate_hz, max_frame_rate_hz, " (frames per second)"));
   if (simulation.has("substeps") && simulation.has("time_step")) {
     simulation.fail("time_step", "either \"substeps\" or \"time_step\", not both");
   }
   if (simulation.has("time_step")) {
     const double h = simulation.number("time_step", positive(" (s)"));
     const double steps = 1.0 / (s.frame_rate * h);
+    // bounded before the cast: 1e-300 would give 3e298 steps, and an int cannot hold them
+    if (!(steps <= max_substeps + 0.5)) {
+      std::ostringstream expected;
+      expected << "a time step of at least " << 1.0 / (s.frame_rate * max_substeps)
+               << " s: at most " << max_substeps << " steps per frame of 1/" << s.frame_rate
+               << " s";
+      simulation.fail("time_step", expected.str());
+    }
     if (std::abs(steps - std::round(steps)) > 1e-6 * steps || std::round(steps) < 1) {
       simulation.fail("time_step", "a time step that divides the frame duration 1/frame_rate");
     }
     s.substeps = static_cast<int>(std::round(steps));
   } else {
-    s.substeps = simulation.integer_or("substeps", 10, 1, 1'000'000);
+    s.substeps = simulation.integer_or("substeps", 10, 1, max_substeps);
   }
   s.solver.time_step = 1.0 / (s.frame_rate * s.substeps);
   s.solver.implicit.cg_tolerance =
@@ -160,7 +234,7 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
   r.min_edge_length_m =
       adaptive.number_or("min_edge_length", r.min_edge_length_m, positive(" (m)"));
   r.max_edge_length_m = adaptive.number_or("max_edge_length", 0.0, non_negative(" (m)"));
-  r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, 10'000'000);
+  r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, max_cloth_particles);
   a.hysteresis =
       adaptive.number_or("hysteresis", a.hysteresis, {0.0, 0.999, false, "a number in [0, 1)"});
   if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0 &&
@@ -183,21 +257,26 @@ void read_output(JsonObjectReader output, OutputOptions& o) {
 
 Scenario parse_scenario(const std::string& text, const std::filesystem::path& file,
                         const std::vector<std::string>& overrides) {
-  const std::string name = file.string();
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::string what = e.what();
-    if (const auto cut = what.find("] "); cut != std::string::npos) what = what.substr(cut + 2);
-    throw ScenarioError(name + ": invalid JSON: " + what);
+  const std::string name = printable_text(file.string());
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw ScenarioError(name + ": the file is empty; expected a JSON object {...}");
   }
+  if (text.size() > max_scenario_bytes) {
+    throw ScenarioError(name + ": " + std::to_string(text.size()) +
+                        " bytes of text, more than the " + std::to_string(max_scenario_bytes) +
+                        " (16 MiB) a scenario may have");
+  }
+  StrictJsonResult parsed = parse_strict_json(text, name);
+  if (!parsed.syntax_error.empty()) {
+    throw ScenarioError(name + ": invalid JSON: " + parsed.syntax_error);
+  }
+  nlohmann::json root = std::move(parsed.value);
   for (const std::string& assignment : overrides) apply_override(root, assignment, name);
 
   Scenario s;
   s.file = file;
   JsonObjectReader top = object_reader(root, name, "");
-  s.name = top.has("name") ? top.string("name") : file.stem().string();
+  s.name = read_name(top, file);
   read_cloth(top.object("cloth"), s);
   s.pins = read_pins(top);
   if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
@@ -233,11 +312,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
 
 Scenario load_scenario(const std::filesystem::path& file,
                        const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
-  if (!in) throw ScenarioError(file.string() + ": cannot open the scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scenario(text.str(), file, overrides);
+  return parse_scenario(read_scenario_text(file, printable_text(file.string())), file, overrides);
 }
 
 }  // namespace tissu

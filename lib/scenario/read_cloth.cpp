@@ -2,19 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "lib/scenario/scenario_limits.hpp"
 
 namespace tissu {
 namespace {
 
 GridOptions read_grid(JsonObjectReader grid) {
   GridOptions o;
-  const std::vector<double> size = grid.numbers("size", 2, positive(" (m)"));
+  const std::vector<double> size =
+      grid.numbers("size", 2, between(min_grid_side_m, max_grid_side_m, " (m)"));
   o.width = size[0];
   o.height = size[1];
   const std::vector<int> resolution = grid.integers("resolution", 1);
   if (resolution.size() != 2) grid.fail("resolution", "two cell counts [along u, along v]");
   o.cells_u = resolution[0];
   o.cells_v = resolution[1];
+  // bounded before building: [65536, 65536] would ask for 4.3e9 particles and their springs
+  const long long particles = (o.cells_u + 1LL) * (o.cells_v + 1LL);
+  if (particles > max_cloth_particles) {
+    grid.fail("resolution", "cell counts [u, v] giving at most " +
+                                std::to_string(max_cloth_particles) +
+                                " particles (u + 1) (v + 1), the cloth size limit (these give " +
+                                std::to_string(particles) + ")");
+  }
   o.cells = grid.choice_or("cells", "triangles", {"triangles", "quads"}) == "quads"
                 ? GridCells::quads
                 : GridCells::triangles;
@@ -168,6 +180,7 @@ void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
   } else {
     JsonObjectReader mesh = cloth.object("mesh");
     const std::filesystem::path file = mesh.string("file");
+    if (file.empty()) mesh.fail("file", "the path of a mesh file, not an empty string");
     scenario.cloth.mesh_file = file.is_absolute() ? file : scenario.file.parent_path() / file;
     scenario.cloth.frame = read_frame(mesh);
     mesh.finish();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lib/mesh_io/read_mesh.hpp"
+#include "lib/scenario/scenario_limits.hpp"
 #include "topology/mesh_obstacle.hpp"
 
 namespace tissu {
@@ -50,9 +51,11 @@ Eigen::Matrix3d read_rotation(JsonObjectReader rotation) {
 std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
                                                       std::vector<std::string>& notes) {
   const std::filesystem::path given = o.string("file");
+  if (given.empty()) o.fail("file", "the path of a mesh file, not an empty string");
   const std::filesystem::path file =
       given.is_absolute() ? given : std::filesystem::path(o.file()).parent_path() / given;
-  const double scale = o.number_or("scale", 1.0, positive(""));
+  const double scale =
+      o.number_or("scale", 1.0, between(min_obstacle_scale, max_obstacle_scale, ""));
   const Eigen::Matrix3d rotation =
       o.has("rotation") ? read_rotation(o.object("rotation")) : Eigen::Matrix3d::Identity();
   const Eigen::Vector3d position = o.vector3_or("position", Eigen::Vector3d::Zero());

@@ -34,6 +34,15 @@ RenderSettings read_render(JsonObjectReader render) {
   o.width = read_even_pixels(render, "width", o.width);
   o.height = read_even_pixels(render, "height", o.height);
   o.samples = render.integer_or("samples", o.samples, 1, 16);
+  if (const long long samples = 1LL * o.width * o.height * o.samples;
+      samples > max_render_samples) {
+    // named here with the key the user can lower; validate_render_options checks it again
+    render.fail(o.samples > 1 ? "samples" : "width",
+                "at most " + std::to_string(max_render_samples) +
+                    " samples per image, width x height x samples (the render memory limit), not " +
+                    std::to_string(o.width) + " x " + std::to_string(o.height) + " x " +
+                    std::to_string(o.samples) + " = " + std::to_string(samples));
+  }
   o.wireframe = render.boolean_or("wireframe", o.wireframe);
   o.color_mode = render.choice_or("color_mode", "shaded", {"shaded", "strain"}) == "strain"
                      ? ColorMode::strain

@@ -275,7 +275,8 @@ TEST(Scenario, MissingFileIsNamed) {
     load_scenario("no/such/file.json");
     FAIL();
   } catch (const ScenarioError& e) {
-    EXPECT_STREQ(e.what(), "no/such/file.json: cannot open the scenario file");
+    EXPECT_STREQ(e.what(),
+                 "no/such/file.json: cannot open the scenario file: No such file or directory");
   }
 }
 
