@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "apps/stop_signals.hpp"
@@ -119,6 +120,16 @@ void print_errors_on_one_line(CLI::App& app, const std::string& program) {
   });
 }
 
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+    return std::nullopt;
+  } catch (const CLI::ParseError& e) {
+    // app.exit prints the help, or the error through the failure message above
+    return app.exit(e) == 0 ? 0 : 1;
+  }
+}
+
 int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,
              const std::string& output_dir) {
   CLI::App app{description};
@@ -128,7 +139,7 @@ int run_demo(int argc, char** argv, const std::string& description, const std::s
   run.output_dir = output_dir;
   app.add_option("--scenario", run.scenario, "scenario file")->capture_default_str();
   add_run_options(app, run);
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> status = parse_command_line(app, argc, argv)) return *status;
   return execute(run);
 }
 

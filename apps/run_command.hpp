@@ -28,6 +28,11 @@ int execute(const RunCommand& command);
 /// [SUBCOMMAND] --help)", instead of its two. Call before adding subcommands: they copy it.
 void print_errors_on_one_line(CLI::App& app, const std::string& program);
 
+/// Parses the command line into `app`'s options: nullopt to go on, else the exit status to return
+/// at once: 0 after printing --help, 1 after printing a command-line error (bad input, as a bad
+/// scenario is), whatever CLI11's own code for it.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+
 /// A demo program's main: --scenario (defaulting to `scenario`) plus the run options, output to
 /// `output_dir` unless --out says otherwise; returns execute()'s exit status.
 int run_demo(int argc, char** argv, const std::string& description, const std::string& scenario,

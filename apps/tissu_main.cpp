@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <optional>
 
 #include "apps/material_test_command.hpp"
 #include "apps/passive_openmp.hpp"
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
       "measure E, nu and G of every stiffness formulation on test sheets (docs/materials.md)");
   tissu::add_material_test_options(*material_test_app, material_test);
 
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> status = tissu::parse_command_line(app, argc, argv)) return *status;
   if (run_app->parsed()) return tissu::execute(run);
   if (material_test_app->parsed()) return tissu::execute(material_test);
   return tissu::execute(render);

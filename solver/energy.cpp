@@ -1,5 +1,6 @@
 #include "solver/energy.hpp"
 
+#include "solver/compensated_sum.hpp"
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 
@@ -31,7 +32,9 @@ double potential_energy(const SpringModel& model, const Eigen::Vector3d& gravity
 }
 
 double total_mass(const SpringModel& model) {
-  return model.mass.sum();
+  CompensatedSum total_kg;
+  for (const double m : model.mass) total_kg.add(m);
+  return total_kg.value();
 }
 
 }  // namespace tissu

@@ -15,7 +15,7 @@ double kinetic_energy(const SpringModel& model, const State& state);
 double potential_energy(const SpringModel& model, const Eigen::Vector3d& gravity,
                         const State& state);
 
-/// Total mass sum of m_i (kg).
+/// Total mass sum of m_i (kg), compensated (solver/compensated_sum.hpp).
 double total_mass(const SpringModel& model);
 
 }  // namespace tissu

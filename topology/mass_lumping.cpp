@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "solver/compensated_sum.hpp"
 #include "topology/complex_navigation.hpp"
 
 namespace tissu {
@@ -22,19 +23,19 @@ void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex) {
 }
 
 double complex_total_mass(const ClothComplex& lcc) {
-  double total_kg = 0.0;
+  CompensatedSum total_kg;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    total_kg += v->info().mass;
+    total_kg.add(v->info().mass);
   }
-  return total_kg;
+  return total_kg.value();
 }
 
 double complex_expected_mass(const ClothComplex& lcc) {
-  double total_kg = 0.0;
+  CompensatedSum total_kg;
   for (auto face = lcc.attributes<2>().begin(); face != lcc.attributes<2>().end(); ++face) {
-    total_kg += face->info().areal_density * face->info().rest_area;
+    total_kg.add(face->info().areal_density * face->info().rest_area);
   }
-  return total_kg;
+  return total_kg.value();
 }
 
 }  // namespace tissu

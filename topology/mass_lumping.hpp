@@ -14,10 +14,11 @@ void lump_masses(ClothComplex& lcc);
 /// (vertex count of the face), the per-vertex form of lump_masses().
 void lump_vertex_mass(ClothComplex& lcc, Vertex_handle vertex);
 
-/// Sum of particle masses (kg).
+/// Sum of particle masses (kg), compensated (solver/compensated_sum.hpp).
 double complex_total_mass(const ClothComplex& lcc);
 
-/// Sum over faces of areal density x rest area (kg): what the particle masses must add up to.
+/// Sum over faces of areal density x rest area (kg), compensated: what the particle masses must
+/// add up to.
 double complex_expected_mass(const ClothComplex& lcc);
 
 }  // namespace tissu

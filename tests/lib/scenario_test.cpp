@@ -195,8 +195,8 @@ TEST(Scenario, WrongTypesNameTheKeyAndWhatWasExpected) {
   EXPECT_EQ(with("simulation.frames", "2.5"),
             "dir/s.json: simulation.frames: expected an integer from 1 to 10000000, got 2.5");
   EXPECT_EQ(with("cloth.grid.size", "[1]"),
-            "dir/s.json: cloth.grid.size: expected an array of 2 numbers, each a positive number "
-            "(m), got [1]");
+            "dir/s.json: cloth.grid.size: expected an array of 2 numbers, each a number between "
+            "1e-06 and 1e+06 (m), got [1]");
   EXPECT_THAT(with("environment.gravity", "[0, 0]"),
               HasSubstr("environment.gravity: expected an array of 3 finite numbers"));
   EXPECT_THAT(with("output", "[]"), HasSubstr("dir/s.json: output: expected an object"));

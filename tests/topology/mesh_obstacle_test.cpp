@@ -230,7 +230,7 @@ TEST(MeshSurface, RefusesWhatCannotBeQueried) {
         }
       },
       MeshError);
-  EXPECT_THROW(make_mesh_surface(IndexedMesh{cube().vertices, {}}), MeshError);
+  EXPECT_THROW(make_mesh_surface(IndexedMesh{cube().vertices, {}, {}}), MeshError);
   IndexedMesh flat = cube();
   flat.faces = {{0, 1, 1}, {0, 0, 0}};
   EXPECT_THROW(make_mesh_surface(flat), MeshError);
