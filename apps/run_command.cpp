@@ -69,6 +69,9 @@ int execute(const RunCommand& command) {
     options.stop = stop;
     ProgressReporter progress = stderr_progress();
     if (!command.quiet) {
+      options.on_setup = [](const std::string& stage) {
+        std::fprintf(stderr, "tissu: %s\n", stage.c_str());
+      };
       options.on_frame = [&progress](const FrameStats& row) { progress(row); };
       options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
     }

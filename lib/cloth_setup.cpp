@@ -1,8 +1,11 @@
 #include "lib/cloth_setup.hpp"
 
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 #include "lib/mesh_io/read_mesh.hpp"
+#include "lib/scenario/scenario_limits.hpp"
 #include "topology/apply_pins.hpp"
 #include "topology/build_cloth_complex.hpp"
 #include "topology/grid_mesh.hpp"
@@ -44,19 +47,40 @@ std::vector<PinSelector> pins_on_mesh_vertices(const Scenario& scenario, const N
   return pins;
 }
 
+/// The cloth mesh file of `scenario`, read; errors name the scenario and the key, then the mesh
+/// file's own message, as an obstacle's do.
+NumberedMesh read_cloth_mesh(const Scenario& scenario, const SetupStage& on_stage) {
+  const std::filesystem::path& file = scenario.cloth.mesh_file;
+  const std::string where = scenario.file.string() + ": cloth.mesh.file: ";
+  std::error_code no_size;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, no_size);
+  if (on_stage && !no_size && bytes >= large_mesh_file_bytes) {
+    on_stage("reading the cloth mesh " + file.string() + ": " + std::to_string(bytes >> 20) +
+             " MiB");
+  }
+  NumberedMesh read;
+  try {
+    read = read_numbered_mesh(file);
+  } catch (const MeshError& e) {
+    throw MeshError(where + e.what());
+  }
+  // each vertex a face uses is a particle (the reader keeps no other)
+  if (read.mesh.vertices.size() > static_cast<std::size_t>(max_cloth_particles)) {
+    throw MeshError(where + file.string() + ": " + std::to_string(read.mesh.vertices.size()) +
+                    " vertices, more than the " + std::to_string(max_cloth_particles) +
+                    " particles a cloth may have (the cloth size limit, docs/scenario.md)");
+  }
+  return read;
+}
+
 }  // namespace
 
-void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
+void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc, const SetupStage& on_stage) {
   NumberedMesh read;
   if (scenario.cloth.grid) {
     read.mesh = make_grid_mesh(*scenario.cloth.grid);
   } else {
-    // named like an obstacle's mesh: the scenario, the key, then the mesh file's own message
-    try {
-      read = read_numbered_mesh(scenario.cloth.mesh_file);
-    } catch (const MeshError& e) {
-      throw MeshError(scenario.file.string() + ": cloth.mesh.file: " + e.what());
-    }
+    read = read_cloth_mesh(scenario, on_stage);
   }
   // grid vertex ids are the mesh's; a file's are mapped to the mesh's
   const std::vector<PinSelector> pins =
@@ -65,6 +89,10 @@ void build_scenario_cloth(const Scenario& scenario, ClothComplex& lcc) {
   // refinement (adaptive, or around crack tips) bisects triangles: quads are cut once, here
   // (their shear springs become edges); vertex ids are kept
   if (scenario.refines_cloth()) mesh = triangulate_quads(mesh);
+  if (on_stage && mesh.faces.size() >= large_cloth_faces) {
+    on_stage("building the cloth complex: " + std::to_string(mesh.faces.size()) + " faces, " +
+             std::to_string(mesh.vertices.size()) + " particles");
+  }
   try {
     build_cloth_complex(mesh, scenario.areal_density, scenario.springs, lcc);
   } catch (const std::invalid_argument& e) {  // a cell the material's formulation does not define

@@ -241,7 +241,11 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   std::filesystem::create_directories(options.output_dir);
 
   ClothComplex lcc;
-  build_scenario_cloth(scenario, lcc);
+  build_scenario_cloth(scenario, lcc, options.on_setup);
+  if (options.on_setup && lcc.attributes<2>().size() >= large_cloth_faces) {
+    options.on_setup("compiling the solver's model: " +
+                     std::to_string(lcc.vertex_attributes().size()) + " particles");
+  }
   CompiledCloth cloth = compile(lcc);
   StatsCsv stats(options.output_dir / "stats.csv");
 

@@ -18,6 +18,10 @@ namespace tissu {
 struct RunOptions {
   std::filesystem::path output_dir = "out";  ///< created if missing; files in it are overwritten
   std::optional<int> frames;                 ///< overrides the scenario's frame count
+  /// called before each setup stage of a large cloth (lib/cloth_setup.hpp: reading a mesh file of
+  /// 16 MiB or more; building and compiling a cloth of 100,000 faces or more) with one line
+  /// saying what it does, e.g. "compiling the solver's model: 1000000 particles"
+  std::function<void(const std::string&)> on_setup;
   std::function<void(const FrameStats&)> on_frame;  ///< called after each frame, e.g. progress
   std::function<void(int, int)> on_image;  ///< called with (done, total) after each rendered image
   /// called once, at the first frame with an unconverged step, with a one-line explanation

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds tissu's fuzz targets (fuzz/) with clang, libFuzzer, AddressSanitizer and UBSan into
 # build/fuzz and fuzzes each for a bounded time, starting from the kept corpus.
-#   usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]    (default: 60 s, every target)
+#   usage: scripts/fuzz.sh [SECONDS_PER_TARGET | --runs N] [TARGET...]
+#          (default: 60 s, every target; --runs N: N inputs per target, the same N inputs on
+#          every machine, as scripts/test.sh runs it in CI)
 # Targets: scenario, mesh_obj, mesh_ply, mesh_off, mesh_stl, mesh_glb, mesh_gltf. The run works
 # on a copy of the corpus (build/fuzz/corpus/TARGET); an input that crashes, hangs (over 20 s),
 # leaks or prints an unclear message is written to build/fuzz/findings/TARGET/ and the script
@@ -9,8 +11,14 @@
 # folder through the target in every build (fuzz_corpus.TARGET).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
-shift || true
+budget=(-max_total_time=60)
+if [[ ${1:-} == --runs ]]; then
+  budget=(-runs="$2")
+  shift 2
+elif [[ -n ${1:-} && ${1:-} != [a-z]* ]]; then
+  budget=(-max_total_time="$1")
+  shift
+fi
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   targets=(scenario mesh_obj mesh_ply mesh_off mesh_stl mesh_glb mesh_gltf)
@@ -28,9 +36,9 @@ for target in "${targets[@]}"; do
   cp -n tests/corpus/fuzz/"$target"/* "$corpus"/ 2>/dev/null || true
   if [[ $target == mesh_* ]]; then cp -n tests/corpus/meshes/* "$corpus"/; fi
   if [[ $target == scenario ]]; then cp -n data/scenarios/*.json tests/apps/scenarios/*.json "$corpus"/; fi
-  echo "fuzz: $target for $seconds s"
-  # -seed fixed: a CI run explores the same inputs each time unless the code changed
-  if ! build/fuzz/fuzz/fuzz_"$target" "$corpus" -max_total_time="$seconds" -timeout=20 \
+  echo "fuzz: $target (${budget[*]})"
+  # -seed fixed: with --runs, a run explores the same inputs each time unless the code changed
+  if ! build/fuzz/fuzz/fuzz_"$target" "$corpus" "${budget[@]}" -timeout=20 \
       -rss_limit_mb=4096 -seed=1 -print_final_stats=1 -artifact_prefix="$findings"/ \
       > build/fuzz/"$target".log 2>&1; then
     echo "fuzz: $target FOUND a bug: $(ls "$findings" | head -3 | tr '\n' ' ')(log: build/fuzz/$target.log)"

@@ -284,5 +284,54 @@ TEST(ClothSetup, PinsByIndexOnAGridUseGridVertexIds) {
   EXPECT_EQ(pinned_rest_positions(parse_scenario(text, "grid.json")), expected);
 }
 
+/// A grid cloth of cells_u x cells_v quads.
+Scenario quad_grid(int cells_u, int cells_v) {
+  const std::string text = R"({
+  "cloth": { "grid": { "size": [1, 1], "cells": "quads", "resolution": [)" +
+                           std::to_string(cells_u) + ", " + std::to_string(cells_v) + R"(] },
+             "density": 0.2, "springs": { "structural": { "stiffness": 100 } } },
+  "simulation": { "frames": 1 }
+})";
+  return parse_scenario(text, "grid.json");
+}
+
+std::vector<std::string> setup_stages(const Scenario& scenario) {
+  std::vector<std::string> stages;
+  ClothComplex lcc;
+  build_scenario_cloth(scenario, lcc, [&](const std::string& stage) { stages.push_back(stage); });
+  return stages;
+}
+
+TEST(ClothSetup, ReportsBuildingALargeClothAndNotASmallOne) {
+  EXPECT_THAT(setup_stages(quad_grid(320, 320)),  // 102,400 faces
+              ::testing::ElementsAre("building the cloth complex: 102400 faces, 103041 particles"));
+  EXPECT_THAT(setup_stages(quad_grid(316, 316)), ::testing::IsEmpty());  // 99,856 faces
+}
+
+// A strip of 2 x 500,001 vertices and 1,000,000 triangles: one vertex more than the limit.
+TEST(ClothSetup, RefusesAMeshOfMoreVerticesThanACloth) {
+  const fs::path dir = test::fresh_temp_dir("cloth_setup/too_large");
+  const int columns = 500'001;
+  std::string obj;
+  obj.reserve(std::size_t{40} * 4 * columns);
+  for (int k = 0; k < columns; ++k) {
+    obj += "v " + std::to_string(k) + " 0 0\nv " + std::to_string(k) + " 0 1\n";
+  }
+  for (int k = 1; k < columns; ++k) {  // bottom vertex 2k - 1, top 2k (1-based)
+    const std::string b0 = std::to_string(2 * k - 1), t0 = std::to_string(2 * k),
+                      b1 = std::to_string(2 * k + 1), t1 = std::to_string(2 * k + 2);
+    obj += "f " + b0 + " " + b1 + " " + t0 + "\nf " + t0 + " " + b1 + " " + t1 + "\n";
+  }
+  const fs::path file = write_file(dir / "strip.obj", obj);
+  try {
+    ClothComplex lcc;
+    build_scenario_cloth(scenario_of(file, "[]"), lcc);
+    ADD_FAILURE() << "a mesh of 1000002 vertices was accepted";
+  } catch (const MeshError& e) {
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("scenario.json: cloth.mesh.file: " + file.string()),
+                                HasSubstr("1000002 vertices, more than the 1000000 particles")));
+  }
+}
+
 }  // namespace
 }  // namespace tissu

@@ -12,6 +12,7 @@
 #include "lib/scenario/printable_text.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "tests/lib/scenario_errors.hpp"
 
 namespace tissu {
 namespace {
@@ -19,27 +20,8 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const char* const minimal = R"({
-  "cloth": {
-    "grid": { "size": [1.0, 0.5], "resolution": [4, 2] },
-    "density": 0.2,
-    "springs": { "structural": { "stiffness": 100 } }
-  },
-  "simulation": { "frames": 3 }
-})";
-
-std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {},
-                     const std::string& file = "dir/s.json") {
-  try {
-    parse_scenario(text, file, overrides);
-  } catch (const ScenarioError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 std::string with(const std::string& assignment) {
-  return error_of(minimal, {assignment});
+  return test::scenario_error_of(test::minimal_scenario, {assignment});
 }
 
 TEST(ScenarioLimits, TheTimeStepIsBoundedBeforeItBecomesAStepCount) {
@@ -49,11 +31,12 @@ TEST(ScenarioLimits, TheTimeStepIsBoundedBeforeItBecomesAStepCount) {
             "at most 1000000 steps per frame of 1/30 s, got 1e-300");
   EXPECT_THAT(with("simulation.time_step=5e-324"),
               HasSubstr("simulation.time_step: expected a time step of at least"));
-  const Scenario finest = parse_scenario(minimal, "dir/s.json",
+  const Scenario finest = parse_scenario(test::minimal_scenario, "dir/s.json",
                                          {"simulation.frame_rate=1", "simulation.time_step=1e-6"});
   EXPECT_EQ(finest.substeps, max_substeps);
-  EXPECT_EQ(parse_scenario(minimal, "s.json", {"simulation.substeps=1000000"}).substeps,
-            max_substeps);
+  EXPECT_EQ(
+      parse_scenario(test::minimal_scenario, "s.json", {"simulation.substeps=1000000"}).substeps,
+      max_substeps);
   EXPECT_THAT(with("simulation.substeps=1000001"),
               HasSubstr("simulation.substeps: expected an integer from 1 to 1000000"));
 }
@@ -68,9 +51,9 @@ TEST(ScenarioLimits, TheFrameRateKeepsTheTimeStepANormalNumber) {
 }
 
 TEST(ScenarioLimits, AGridHasAtMostAMillionParticles) {
-  EXPECT_EQ(
-      parse_scenario(minimal, "s.json", {"cloth.grid.resolution=[999,999]"}).cloth.grid->cells_u,
-      999);
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "s.json", {"cloth.grid.resolution=[999,999]"})
+                .cloth.grid->cells_u,
+            999);
   EXPECT_EQ(with("cloth.grid.resolution=[1000,999]"),
             "dir/s.json: cloth.grid.resolution: expected cell counts [u, v] giving at most 1000000 "
             "particles (u + 1) (v + 1), the cloth size limit (these give 1001000), got [1000,999]");
@@ -122,7 +105,8 @@ TEST(ScenarioLimits, AdaptiveRefinementStopsAtAMillionParticles) {
 }
 
 TEST(ScenarioLimits, TheNameIsAPlainFileName) {
-  EXPECT_EQ(parse_scenario(minimal, "dir/s.json", {"name=my-run_2"}).name, "my-run_2");
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json", {"name=my-run_2"}).name,
+            "my-run_2");
   // absolute, or climbing out of out/: each once wrote outside the output folder
   EXPECT_EQ(with("name=/tmp/x"),
             "dir/s.json: name: expected a plain file name (no '/', not \".\" or \"..\", at most "
@@ -135,8 +119,8 @@ TEST(ScenarioLimits, TheNameIsAPlainFileName) {
   EXPECT_THAT(with(R"(name="a\nb")"), HasSubstr("control characters"));
   EXPECT_THAT(with("name=3"), HasSubstr("name: expected a string"));
   // the default, the file's stem, obeys the same rule
-  EXPECT_EQ(parse_scenario(minimal, "dir/run.v2.json").name, "run.v2");
-  EXPECT_THAT(error_of(minimal, {}, "dir/...json"),
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/run.v2.json").name, "run.v2");
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario, {}, "dir/...json"),
               HasSubstr("dir/...json: name: missing, and the file's stem \"..\" is not a plain "
                         "file name"));
 }
@@ -153,25 +137,31 @@ TEST(ScenarioLimits, MeshPathsAreNotEmpty) {
 }
 
 TEST(ScenarioLimits, TheTextIsOneJsonValueWithoutRepeatedKeys) {
-  EXPECT_EQ(error_of(""), "dir/s.json: the file is empty; expected a JSON object {...}");
-  EXPECT_EQ(error_of(" \n\t "), "dir/s.json: the file is empty; expected a JSON object {...}");
-  EXPECT_THAT(error_of(std::string(minimal) + std::string("\0", 1)),
-              HasSubstr("dir/s.json: invalid JSON: a NUL byte at line 8, column 2"));
-  EXPECT_THAT(error_of(std::string(minimal) + " 1"), HasSubstr("expected end of input"));
-  EXPECT_THAT(error_of(R"({"cloth": {"density": -1, "density": 0.2}})"),
+  EXPECT_EQ(test::scenario_error_of(""),
+            "dir/s.json: the file is empty; expected a JSON object {...}");
+  EXPECT_EQ(test::scenario_error_of(" \n\t "),
+            "dir/s.json: the file is empty; expected a JSON object {...}");
+  // just after the closing brace, on the minimal scenario's 9th line
+  EXPECT_THAT(test::scenario_error_of(std::string(test::minimal_scenario) + std::string("\0", 1)),
+              HasSubstr("dir/s.json: invalid JSON: a NUL byte at line 9, column 2"));
+  EXPECT_THAT(test::scenario_error_of(std::string(test::minimal_scenario) + " 1"),
+              HasSubstr("expected end of input"));
+  EXPECT_THAT(test::scenario_error_of(R"({"cloth": {"density": -1, "density": 0.2}})"),
               HasSubstr("dir/s.json: cloth.density: duplicate key"));
-  EXPECT_THAT(error_of(R"({"cloth": {"grid": {"size": [1, 1e999]}}})"),
+  EXPECT_THAT(test::scenario_error_of(R"({"cloth": {"grid": {"size": [1, 1e999]}}})"),
               HasSubstr("dir/s.json: cloth.grid.size[1]: the number 1e999 is beyond the range"));
-  EXPECT_THAT(error_of("{\"cloth\": " + std::string(100000, '[') + "}"),
+  EXPECT_THAT(test::scenario_error_of("{\"cloth\": " + std::string(100000, '[') + "}"),
               HasSubstr("dir/s.json: cloth[0][0]"));
 }
 
 TEST(ScenarioLimits, OverridesAreCheckedLikeTheFile) {
   // once "stoul"
-  EXPECT_EQ(error_of(minimal, {"pins=[]", "pins.99999999999999999999=1"}),
-            "dir/s.json: --set pins.99999999999999999999=1: 'pins' is an array; expected an index "
-            "below 0");
-  EXPECT_THAT(error_of(minimal, {"pins=[{\"side\": \"top\"}]", "pins.-1.every=1"}),
+  EXPECT_EQ(
+      test::scenario_error_of(test::minimal_scenario, {"pins=[]", "pins.99999999999999999999=1"}),
+      "dir/s.json: --set pins.99999999999999999999=1: 'pins' is an array; expected an index "
+      "below 0");
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario,
+                                      {"pins=[{\"side\": \"top\"}]", "pins.-1.every=1"}),
               HasSubstr("'pins' is an array; expected an index below 1"));
   // once a raw type error from nlohmann
   EXPECT_EQ(with("name=\xFF"),
@@ -195,7 +185,8 @@ TEST(ScenarioLimits, OverridesAreCheckedLikeTheFile) {
   EXPECT_THAT(with(path + "a=[1]"), HasSubstr(": arrays and objects nested more than 64 levels"));
   EXPECT_THAT(with(path + "a.a=1"), HasSubstr(": a key path of more than 64 keys"));
   // text that is not JSON is still a string
-  EXPECT_EQ(parse_scenario(minimal, "dir/s.json", {"name=[not json"}).name, "[not json");
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json", {"name=[not json"}).name,
+            "[not json");
 }
 
 TEST(ScenarioLimits, EveryMessageIsOnePrintableLine) {
@@ -208,7 +199,7 @@ TEST(ScenarioLimits, EveryMessageIsOnePrintableLine) {
                                                          {std::string(100000, 'k') + "=1"},
                                                          {"simulation.integrator=\"\\u0000\""}};
   for (const std::vector<std::string>& overrides : hostile) {
-    const std::string message = error_of(minimal, overrides);
+    const std::string message = test::scenario_error_of(test::minimal_scenario, overrides);
     EXPECT_THAT(message, Not(HasSubstr("\n"))) << message;
     EXPECT_EQ(invalid_utf8_offset(message), std::string::npos) << message;
     EXPECT_LT(message.size(), 1000u) << message;

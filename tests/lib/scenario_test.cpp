@@ -8,6 +8,7 @@
 #include "lib/mesh_io/write_mesh.hpp"
 #include "lib/obstacle_mesh.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "tests/lib/scenario_errors.hpp"
 #include "tests/test_meshes.hpp"
 #include "tests/test_temp_dir.hpp"
 
@@ -16,31 +17,12 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const char* const minimal = R"({
-  // a comment, allowed
-  "cloth": {
-    "grid": { "size": [1.0, 0.5], "resolution": [4, 2] },
-    "density": 0.2,
-    "springs": { "structural": { "stiffness": 100 } }
-  },
-  "simulation": { "frames": 3 }
-})";
-
-std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  try {
-    parse_scenario(text, "dir/s.json", overrides);
-  } catch (const ScenarioError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 std::string with(const std::string& key, const std::string& value) {
-  return error_of(minimal, {key + "=" + value});
+  return test::scenario_error_of(test::minimal_scenario, {key + "=" + value});
 }
 
 TEST(Scenario, MinimalScenarioGetsDocumentedDefaults) {
-  const Scenario s = parse_scenario(minimal, "dir/s.json");
+  const Scenario s = parse_scenario(test::minimal_scenario, "dir/s.json");
   EXPECT_EQ(s.name, "s");
   ASSERT_TRUE(s.cloth.grid.has_value());
   EXPECT_EQ(s.cloth.grid->cells_u, 4);
@@ -101,39 +83,41 @@ TEST(Scenario, ReadsEverySection) {
 
 TEST(Scenario, ReadsProjectiveDynamicsOptions) {
   const Scenario s = parse_scenario(
-      minimal, "dir/s.json",
+      test::minimal_scenario, "dir/s.json",
       {"simulation.integrator=projective_dynamics",
        R"(simulation.pd={"global_solver": "colored_gauss_seidel", "iterations": 20, "tolerance": 1e-4})"});
   EXPECT_EQ(s.solver.integrator, Integrator::projective_dynamics);
   EXPECT_EQ(s.solver.pd.global_solver, PdGlobalSolver::colored_gauss_seidel);
   EXPECT_EQ(s.solver.pd.iterations, 20);
   EXPECT_DOUBLE_EQ(s.solver.pd.tolerance, 1e-4);
-  EXPECT_EQ(parse_scenario(minimal, "dir/s.json", {"simulation.pd.global_solver=chebyshev"})
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
+                           {"simulation.pd.global_solver=chebyshev"})
                 .solver.pd.global_solver,
             PdGlobalSolver::chebyshev);
-  EXPECT_EQ(
-      parse_scenario(minimal, "dir/s.json", {"simulation.pd.global_solver=block_gauss_seidel"})
-          .solver.pd.global_solver,
-      PdGlobalSolver::block_gauss_seidel);
-  EXPECT_THAT(error_of(minimal, {"simulation.pd.global_solver=sor"}),
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
+                           {"simulation.pd.global_solver=block_gauss_seidel"})
+                .solver.pd.global_solver,
+            PdGlobalSolver::block_gauss_seidel);
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario, {"simulation.pd.global_solver=sor"}),
               HasSubstr("simulation.pd.global_solver: expected one of \"direct\", \"jacobi\""));
 }
 
 TEST(Scenario, ReadsTheChebyshevOptions) {
   const ProjectiveDynamicsOptions defaults;
-  const Scenario plain = parse_scenario(minimal, "dir/s.json");
+  const Scenario plain = parse_scenario(test::minimal_scenario, "dir/s.json");
   EXPECT_DOUBLE_EQ(plain.solver.pd.chebyshev_relaxation, defaults.chebyshev_relaxation);
   EXPECT_EQ(plain.solver.pd.chebyshev_delay, defaults.chebyshev_delay);
   const Scenario s = parse_scenario(
-      minimal, "dir/s.json",
+      test::minimal_scenario, "dir/s.json",
       {R"(simulation.pd={"global_solver": "chebyshev", "chebyshev_spectral_radius": 0.9,
                          "chebyshev_relaxation": 0.8, "chebyshev_delay": 5})"});
   EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_spectral_radius, 0.9);
   EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_relaxation, 0.8);
   EXPECT_EQ(s.solver.pd.chebyshev_delay, 5);
-  EXPECT_DOUBLE_EQ(parse_scenario(minimal, "dir/s.json", {"simulation.pd.chebyshev_relaxation=1"})
-                       .solver.pd.chebyshev_relaxation,
-                   1.0);
+  EXPECT_DOUBLE_EQ(
+      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.pd.chebyshev_relaxation=1"})
+          .solver.pd.chebyshev_relaxation,
+      1.0);
 }
 
 TEST(Scenario, ChebyshevOptionsOutOfRangeAreNamed) {
@@ -154,7 +138,7 @@ TEST(Scenario, ChebyshevOptionsOutOfRangeAreNamed) {
 
 TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   const Scenario s = parse_scenario(
-      minimal, "dir/s.json",
+      test::minimal_scenario, "dir/s.json",
       {"simulation.integrator=newton",
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3})",
@@ -179,9 +163,10 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
 }
 
 TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
-  std::string text = minimal;
+  std::string text = test::minimal_scenario;
   text.replace(text.find("\"density\""), 9, "\"densty\"");
-  EXPECT_EQ(error_of(text), "dir/s.json: cloth.densty: unknown key; did you mean 'density'?");
+  EXPECT_EQ(test::scenario_error_of(text),
+            "dir/s.json: cloth.densty: unknown key; did you mean 'density'?");
 }
 
 TEST(Scenario, UnknownKeyFarFromAnyIsListedWithTheKnownOnes) {
@@ -222,11 +207,11 @@ TEST(Scenario, OutOfRangeValuesNameTheRange) {
 }
 
 TEST(Scenario, MissingRequiredKeysAreNamed) {
-  EXPECT_EQ(error_of(R"({"cloth": {"grid": {"size": [1, 1], "resolution": [1, 1]},
+  EXPECT_EQ(test::scenario_error_of(R"({"cloth": {"grid": {"size": [1, 1], "resolution": [1, 1]},
                                     "springs": {"structural": {"stiffness": 1}}},
                          "simulation": {"frames": 1}})"),
             "dir/s.json: cloth.density: missing; expected a positive number (kg/m^2)");
-  EXPECT_EQ(error_of(R"({"simulation": {"frames": 1}})"),
+  EXPECT_EQ(test::scenario_error_of(R"({"simulation": {"frames": 1}})"),
             "dir/s.json: cloth: missing; expected an object {...}");
   EXPECT_THAT(with("cloth.springs.structural", "{\"enabled\": false, \"stiffness\": 1}"),
               HasSubstr("cloth.springs.structural: expected structural springs"));
@@ -235,24 +220,28 @@ TEST(Scenario, MissingRequiredKeysAreNamed) {
 TEST(Scenario, ConflictingChoicesAreRejected) {
   EXPECT_THAT(with("cloth.mesh", "{\"file\": \"a.obj\"}"),
               HasSubstr("expected exactly one of \"grid\" and \"mesh\""));
-  EXPECT_THAT(error_of(minimal, {"simulation.time_step=0.001", "simulation.substeps=3"}),
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario,
+                                      {"simulation.time_step=0.001", "simulation.substeps=3"}),
               HasSubstr("either \"substeps\" or \"time_step\", not both"));
-  EXPECT_THAT(error_of(minimal, {"pins=[{\"side\": \"top\", \"box\": {}}]"}),
-              HasSubstr("dir/s.json: pins[0]: expected exactly one of"));
-  EXPECT_THAT(error_of(minimal, {"pins=[{\"corners\": [\"middle\"]}]"}),
-              HasSubstr("dir/s.json: pins[0].corners[0]: expected one of \"bottom_left\""));
-  EXPECT_THAT(error_of(minimal, {"pins=[{\"box\": {\"min\": [1,1,1], \"max\": [0,0,0]}}]"}),
+  EXPECT_THAT(
+      test::scenario_error_of(test::minimal_scenario, {"pins=[{\"side\": \"top\", \"box\": {}}]"}),
+      HasSubstr("dir/s.json: pins[0]: expected exactly one of"));
+  EXPECT_THAT(
+      test::scenario_error_of(test::minimal_scenario, {"pins=[{\"corners\": [\"middle\"]}]"}),
+      HasSubstr("dir/s.json: pins[0].corners[0]: expected one of \"bottom_left\""));
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario,
+                                      {"pins=[{\"box\": {\"min\": [1,1,1], \"max\": [0,0,0]}}]"}),
               HasSubstr("pins[0].box.max: expected max >= min"));
 }
 
 TEST(Scenario, InvalidJsonGivesTheLineAndColumn) {
   EXPECT_THAT(
-      error_of("{ \"cloth\": { ,"),
+      test::scenario_error_of("{ \"cloth\": { ,"),
       HasSubstr("dir/s.json: invalid JSON: parse error at line 1, column 14: syntax error"));
 }
 
 TEST(Scenario, OverridesSetNestedValuesAndArrayElements) {
-  const Scenario s = parse_scenario(minimal, "dir/s.json",
+  const Scenario s = parse_scenario(test::minimal_scenario, "dir/s.json",
                                     {"cloth.density=0.5", "simulation.integrator=symplectic_euler",
                                      "pins=[{\"side\": \"top\"}]", "pins.0.every=3"});
   EXPECT_DOUBLE_EQ(s.areal_density, 0.5);
@@ -262,11 +251,11 @@ TEST(Scenario, OverridesSetNestedValuesAndArrayElements) {
 }
 
 TEST(Scenario, BadOverridesAreNamed) {
-  EXPECT_EQ(error_of(minimal, {"cloth.density"}),
+  EXPECT_EQ(test::scenario_error_of(test::minimal_scenario, {"cloth.density"}),
             "dir/s.json: --set cloth.density: expected key.path=value");
-  EXPECT_THAT(error_of(minimal, {"cloth.density.x=1"}),
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario, {"cloth.density.x=1"}),
               HasSubstr("'cloth.density' is not an object"));
-  EXPECT_THAT(error_of(minimal, {"pins=[]", "pins.3=1"}),
+  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario, {"pins=[]", "pins.3=1"}),
               HasSubstr("'pins' is an array; expected an index below 0"));
 }
 
@@ -292,7 +281,7 @@ TEST(Scenario, ShippedScenariosLoad) {
 }
 
 TEST(Scenario, ReadsObstaclesOfEveryShape) {
-  const Scenario s = parse_scenario(minimal, "dir/s.json", {R"(obstacles=[
+  const Scenario s = parse_scenario(test::minimal_scenario, "dir/s.json", {R"(obstacles=[
       { "type": "plane", "point": [0, 0, -1], "normal": [0, 0, 2], "static_friction": 0.5 },
       { "type": "sphere", "center": [0, 0, 1], "radius": 0.3, "thickness": 0.01,
         "motion": { "velocity": [0, 0, -1] } },
@@ -318,9 +307,9 @@ TEST(Scenario, ReadsObstaclesOfEveryShape) {
 }
 
 TEST(Scenario, ReadsSelfCollision) {
-  EXPECT_FALSE(parse_scenario(minimal, "s.json").solver.self_collision.enabled);
+  EXPECT_FALSE(parse_scenario(test::minimal_scenario, "s.json").solver.self_collision.enabled);
   const Scenario s = parse_scenario(
-      minimal, "s.json",
+      test::minimal_scenario, "s.json",
       {R"(self_collision={ "thickness": 0.003, "friction": 0.2, "impulse_passes": 2 })"});
   EXPECT_TRUE(s.solver.self_collision.enabled);
   EXPECT_DOUBLE_EQ(s.solver.self_collision.thickness_m, 0.003);
@@ -333,8 +322,8 @@ TEST(Scenario, ReadsSelfCollision) {
 }
 
 TEST(Scenario, ReadsTearing) {
-  EXPECT_FALSE(parse_scenario(minimal, "s.json").tearing.enabled);
-  const Scenario s = parse_scenario(minimal, "s.json", {R"(tearing={
+  EXPECT_FALSE(parse_scenario(test::minimal_scenario, "s.json").tearing.enabled);
+  const Scenario s = parse_scenario(test::minimal_scenario, "s.json", {R"(tearing={
       "strain": 0.2, "max_tears_per_step": 3, "tip_min_edge_length": 0.01, "min_piece_faces": 2,
       "weak_regions": [ { "line": [[0, 0, 0.5], [1, 0, 0.5]], "width": 0.02, "factor": 0.5 },
                         { "box": { "min": [0, 0, 0], "max": [0.1, 0.1, 0.1] }, "factor": 0.8 } ],
@@ -353,8 +342,8 @@ TEST(Scenario, ReadsTearing) {
   ASSERT_EQ(t.cuts.size(), 1u);
   EXPECT_DOUBLE_EQ(t.cuts[0].time_s, 0.5);
 
-  const Scenario pulled =
-      parse_scenario(minimal, "s.json", {R"(pins=[{ "side": "top", "velocity": [0, 0, 0.1] }])"});
+  const Scenario pulled = parse_scenario(test::minimal_scenario, "s.json",
+                                         {R"(pins=[{ "side": "top", "velocity": [0, 0, 0.1] }])"});
   EXPECT_EQ(pulled.pins.at(0).velocity, Eigen::Vector3d(0, 0, 0.1));
 }
 
@@ -380,7 +369,7 @@ TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
   const IndexedMesh cube = test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);  // [-1, 1]^3
   const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle") / "cube.obj";
   write_mesh(file, cube, MeshFormat::obj);
-  const Scenario s = parse_scenario(minimal, "dir/s.json",
+  const Scenario s = parse_scenario(test::minimal_scenario, "dir/s.json",
                                     {R"(obstacles=[{ "type": "mesh", "file": ")" + file.string() +
                                      R"(", "scale": 0.5, "position": [0, 0, 1] }])"});
   ASSERT_EQ(s.solver.obstacles.size(), 1u);
@@ -406,7 +395,7 @@ TEST(Scenario, ReadsAMeshObstacleSoupRotatedFromYUp) {
   const std::filesystem::path file = test::fresh_temp_dir("mesh_obstacle_soup") / "spike.obj";
   write_mesh(file, soup, MeshFormat::obj);
   const Scenario s = parse_scenario(
-      minimal, "dir/s.json",
+      test::minimal_scenario, "dir/s.json",
       {R"(obstacles=[{ "type": "mesh", "file": ")" + file.string() +
        R"(", "scale": 2, "rotation": { "axis": [1, 0, 0], "degrees": 90 }, "position": [0, 0, 1] }])"});
   ASSERT_EQ(s.solver.obstacles.size(), 1u);
@@ -476,29 +465,31 @@ TEST(Scenario, ReadsAMaterialAndTurnsItsDensityIntoAnArealDensity) {
 }
 
 TEST(Scenario, MaterialMistakesAreNamed) {
-  EXPECT_EQ(error_of(with_material, {"cloth.material.nu=0.6"}),
+  EXPECT_EQ(test::scenario_error_of(with_material, {"cloth.material.nu=0.6"}),
             "dir/s.json: cloth.material.nu: expected a Poisson ratio in (-1, 0.5) for formulation "
             "\"delingette2008\": it is a St Venant-Kirchhoff membrane of an isotropic solid, "
             "-1 < nu < 0.5, got 0.6");
-  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=lloyd2007"}),
+  EXPECT_THAT(test::scenario_error_of(with_material, {"cloth.material.formulation=lloyd2007"}),
               HasSubstr("cloth.material.nu: expected a Poisson ratio of 1/3 for formulation "
                         "\"lloyd2007\""));
-  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=baudet2009"}),
+  EXPECT_THAT(test::scenario_error_of(with_material, {"cloth.material.formulation=baudet2009"}),
               HasSubstr("cloth.material.formulation: expected a formulation defined on the "
                         "grid's triangles (cloth.grid.cells): \"baudet2009\" is defined on "
                         "rectangles"));
-  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=hooke"}),
+  EXPECT_THAT(test::scenario_error_of(with_material, {"cloth.material.formulation=hooke"}),
               HasSubstr("cloth.material.formulation: expected one of"));
-  EXPECT_THAT(error_of(with_material, {"cloth.material.E=-1"}),
+  EXPECT_THAT(test::scenario_error_of(with_material, {"cloth.material.E=-1"}),
               HasSubstr("cloth.material.E: expected a positive number"));
-  EXPECT_THAT(error_of(with_material, {"cloth.density=0.2"}),
+  EXPECT_THAT(test::scenario_error_of(with_material, {"cloth.density=0.2"}),
               HasSubstr("cloth.density: expected no \"density\" beside \"material\""));
-  EXPECT_THAT(error_of(with_material, {R"(cloth.springs={"shear": {"stiffness": 3}})"}),
-              HasSubstr("cloth.springs.shear.stiffness: expected no stiffness: with \"material\""));
-  EXPECT_THAT(error_of(with_material, {"simulation.integrator=projective_dynamics"}),
+  EXPECT_THAT(
+      test::scenario_error_of(with_material, {R"(cloth.springs={"shear": {"stiffness": 3}})"}),
+      HasSubstr("cloth.springs.shear.stiffness: expected no stiffness: with \"material\""));
+  EXPECT_THAT(test::scenario_error_of(with_material, {"simulation.integrator=projective_dynamics"}),
               HasSubstr("simulation.integrator: expected \"implicit_euler\""));
-  EXPECT_THAT(error_of(with_material, {"cloth.material.formulation=baudet2009",
-                                       "cloth.grid.cells=quads", "adaptive={\"strain\": 0.1}"}),
+  EXPECT_THAT(test::scenario_error_of(
+                  with_material, {"cloth.material.formulation=baudet2009", "cloth.grid.cells=quads",
+                                  "adaptive={\"strain\": 0.1}"}),
               HasSubstr("cloth.material.formulation: expected a formulation defined on triangles, "
                         "as refinement"));
 }
