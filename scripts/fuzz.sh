@@ -2,8 +2,9 @@
 # Builds tissu's fuzz targets (fuzz/) with clang, libFuzzer, AddressSanitizer and UBSan into
 # build/fuzz and fuzzes each for a bounded time, starting from the kept corpus.
 #   usage: scripts/fuzz.sh [SECONDS_PER_TARGET | --runs N] [TARGET...]
-#          (default: 60 s, every target; --runs N: N inputs per target, the same N inputs on
-#          every machine, as scripts/test.sh runs it in CI)
+#          (default: 60 s, every target). --runs N: N inputs per target, mutated from the kept
+#          fuzz corpus alone (not from the hostile meshes, which take seconds each), the same N
+#          on every machine: the brief run scripts/test.sh makes in CI.
 # Targets: scenario, mesh_obj, mesh_ply, mesh_off, mesh_stl, mesh_glb, mesh_gltf. The run works
 # on a copy of the corpus (build/fuzz/corpus/TARGET); an input that crashes, hangs (over 20 s),
 # leaks or prints an unclear message is written to build/fuzz/findings/TARGET/ and the script
@@ -12,8 +13,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 budget=(-max_total_time=60)
+brief=no  # --runs: a fresh copy of the kept fuzz corpus, no hostile meshes
 if [[ ${1:-} == --runs ]]; then
   budget=(-runs="$2")
+  brief=yes
   shift 2
 elif [[ -n ${1:-} && ${1:-} != [a-z]* ]]; then
   budget=(-max_total_time="$1")
@@ -32,9 +35,10 @@ cmake --build build/fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
 found=0
 for target in "${targets[@]}"; do
   corpus=build/fuzz/corpus/$target findings=build/fuzz/findings/$target
+  if [[ $brief == yes ]]; then rm -rf "$corpus"; fi
   mkdir -p "$corpus" "$findings"
   cp -n tests/corpus/fuzz/"$target"/* "$corpus"/ 2>/dev/null || true
-  if [[ $target == mesh_* ]]; then cp -n tests/corpus/meshes/* "$corpus"/; fi
+  if [[ $target == mesh_* && $brief == no ]]; then cp -n tests/corpus/meshes/* "$corpus"/; fi
   if [[ $target == scenario ]]; then cp -n data/scenarios/*.json tests/apps/scenarios/*.json "$corpus"/; fi
   echo "fuzz: $target (${budget[*]})"
   # -seed fixed: with --runs, a run explores the same inputs each time unless the code changed
