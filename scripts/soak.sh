@@ -9,12 +9,13 @@
 #   - the run ended normally (exit 0), and
 #   - total_mass stayed equal to density x rest area (the first row's) to 1e-12, relative, on every
 #     row of stats.csv.
-#   usage: scripts/soak.sh [MIN_EDITS] [FRAMES]     (defaults: 100000 edits, 12000 frames)
+#   usage: scripts/soak.sh [MIN_EDITS] [FRAMES]     (defaults: 100000 edits, 1500 frames: about
+#   140,000 edits)
 # The run's files are in build/soak/out; the summary line is its last output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 min_edits=${1:-100000}
-frames=${2:-12000}
+frames=${2:-1500}
 build=build/soak
 out=$build/out
 
