@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak test (issue 18; not in CI: it takes about ten minutes): one long run of
+# Soak test (issue 18; not in CI: it takes minutes, after a build of its own): one long run of
 # tests/soak/flag_tearing.json, a flag in gusty wind with adaptive refinement and coarsening,
 # tearing and knife cuts, until it has made at least MIN_EDITS topological edits (splits + merges
 # + tears, summed over stats.csv). It passes when
@@ -9,13 +9,13 @@
 #   - the run ended normally (exit 0), and
 #   - total_mass stayed equal to density x rest area (the first row's) to 1e-12, relative, on every
 #     row of stats.csv.
-#   usage: scripts/soak.sh [MIN_EDITS] [FRAMES]     (defaults: 100000 edits, 1500 frames: about
-#   140,000 edits)
+#   usage: scripts/soak.sh [MIN_EDITS] [FRAMES]     (defaults: 100000 edits, 1000 frames: about
+#   120,000 edits)
 # The run's files are in build/soak/out; the summary line is its last output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 min_edits=${1:-100000}
-frames=${2:-1500}
+frames=${2:-1000}
 build=build/soak
 out=$build/out
 

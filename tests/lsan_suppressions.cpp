@@ -5,3 +5,9 @@
 extern "C" const char* __lsan_default_suppressions() {
   return "leak:libOSMesa.so\n";
 }
+
+// Not the list of suppressions used at exit either: the programs' stderr is checked to be one
+// line on refused input (tests/apps/*.sh), in sanitizer builds too.
+extern "C" const char* __lsan_default_options() {
+  return "print_suppressions=0";
+}

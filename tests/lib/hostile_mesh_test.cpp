@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "lib/mesh_io/read_mesh.hpp"
 #include "tests/test_temp_dir.hpp"
@@ -54,8 +56,8 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
 
 /// A line of expected_errors.txt.
 struct ExpectedError {
-  std::string text;         ///< what the message must contain
-  bool cloth_only = false;  ///< an obstacle may read the file
+  std::vector<std::string> texts;  ///< the message must contain one of these
+  bool cloth_only = false;         ///< an obstacle may read the file
 };
 
 /// expected_errors.txt by file name.
@@ -69,7 +71,16 @@ std::map<std::string, ExpectedError> expected_errors() {
     std::getline(fields, name, '\t');
     std::getline(fields, text, '\t');
     std::getline(fields, scope, '\t');
-    out[name] = {text, scope == "cloth only"};
+    // alternatives, " | " between them: what assimp does with a damaged file may depend on the
+    // allocator (a heap overrun aborts under glibc's, and garbles the mesh under ASan's)
+    std::vector<std::string> texts;
+    for (std::size_t begin = 0;;) {
+      const std::size_t bar = text.find(" | ", begin);
+      texts.push_back(text.substr(begin, bar - begin));
+      if (bar == std::string::npos) break;
+      begin = bar + 3;
+    }
+    out[name] = {texts, scope == "cloth only"};
   }
   return out;
 }
@@ -91,7 +102,10 @@ TEST(HostileMeshCorpus, EveryFileIsRefusedWithOneLineNamingIt) {
       EXPECT_THAT(message, StartsWith(entry.path().string() + ": "));
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
       if (listed != expected.end()) {
-        EXPECT_THAT(message, HasSubstr(listed->second.text));
+        const std::vector<std::string>& texts = listed->second.texts;
+        EXPECT_TRUE(std::any_of(texts.begin(), texts.end(), [&](const std::string& text) {
+          return message.find(text) != std::string::npos;
+        })) << message;
       }
     }
   }
