@@ -8,26 +8,21 @@
 set -u
 tissu=$1 scenario=$2 out=$3
 . "$(dirname "$0")/complete_outputs.sh"
+. "$(dirname "$0")/one_line_error.sh"
 failures=0
 
 # usage: expect_refused NAME LIMIT_KIB EXPECTED_TEXT [tissu run options...]
 expect_refused() {
   local name=$1 limit_kib=$2 text=$3
   shift 3
-  local dir=$out/$name stderr status lines
+  local dir=$out/$name stderr status
   rm -rf "$dir"
   mkdir -p "$dir"
   stderr=$( (trap '' XFSZ; ulimit -f "$limit_kib"; exec "$tissu" run "$scenario" --out "$dir" --quiet "$@") 2>&1 >/dev/null)
   status=$?
-  lines=$(printf '%s\n' "$stderr" | grep -c .)
-  echo "$name: exit status $status, stderr: $stderr"
   local ok=1
-  [ "$status" -eq 1 ] || { echo "FAIL $name: expected exit status 1"; ok=0; }
-  [ "$lines" -eq 1 ] || { echo "FAIL $name: expected one line on stderr, got $lines"; ok=0; }
-  case "$stderr" in
-    *"$dir/$text"*) ;;
-    *) echo "FAIL $name: stderr does not contain: $dir/$text"; ok=0 ;;
-  esac
+  echo -n "$name: "
+  check_one_line_error "$status" "$stderr" 1 "$dir/$text" || ok=0
   check_complete_outputs "$dir" || { echo "FAIL $name: an output is not whole"; ok=0; }
   [ $ok -eq 1 ] || failures=$((failures + 1))
 }

@@ -4,13 +4,8 @@
 set -u
 expected_status=$1 expected_text=$2
 shift 2
+. "$(dirname "$0")/one_line_error.sh"
 stderr=$("$@" 2>&1 >/dev/null)
 status=$?
-lines=$(printf '%s\n' "$stderr" | grep -c .)
-echo "exit status $status, stderr: $stderr"
-[ "$status" -eq "$expected_status" ] || { echo "FAIL: expected exit status $expected_status"; exit 1; }
-[ "$lines" -eq 1 ] || { echo "FAIL: expected one line on stderr, got $lines"; exit 1; }
-case "$stderr" in
-  *"$expected_text"*) echo "ok" ;;
-  *) echo "FAIL: stderr does not contain: $expected_text"; exit 1 ;;
-esac
+check_one_line_error "$status" "$stderr" "$expected_status" "$expected_text" || exit 1
+echo "ok"

@@ -13,16 +13,14 @@ if [ "${TISSU_IN_NAMESPACE:-}" != 1 ]; then
   TISSU_IN_NAMESPACE=1 exec unshare -m "$0" "$@"
 fi
 . "$here/complete_outputs.sh"
+. "$here/one_line_error.sh"
 mount -t tmpfs -o size=2m tissu_full_disk "$out" || { echo "skipped: cannot mount a tmpfs"; exit 77; }
 dir=$out/run
 stderr=$("$tissu" run "$scenario" --out "$dir" --quiet --frames 60 \
   --set "cloth.grid.resolution=[20,20]" 2>&1 >/dev/null)
 status=$?
-lines=$(printf '%s\n' "$stderr" | grep -c .)
-echo "exit status $status, stderr: $stderr"
 echo "files: $(ls "$dir" | grep -c '^frame_.*\.obj$') meshes, $(($(wc -l < "$dir/stats.csv") - 1)) stats rows"
-[ "$status" -eq 1 ] || { echo "FAIL: expected exit status 1"; exit 1; }
-[ "$lines" -eq 1 ] || { echo "FAIL: expected one line on stderr, got $lines"; exit 1; }
+check_one_line_error "$status" "$stderr" 1 ": No space left on device" || exit 1
 case "$stderr" in
   *"$dir/"*": cannot write "*": No space left on device"*) ;;
   *) echo "FAIL: stderr does not name a file of $dir and 'No space left on device'"; exit 1 ;;

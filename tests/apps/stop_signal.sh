@@ -7,6 +7,7 @@
 set -u
 tissu=$1 scenario=$2 out=$3 signal=$4 expected_status=$5 command=$6
 . "$(dirname "$0")/complete_outputs.sh"
+. "$(dirname "$0")/one_line_error.sh"
 dir=$out/$command-$signal
 rm -rf "$dir"
 mkdir -p "$dir"
@@ -41,15 +42,8 @@ fi
 kill -s "$signal" "$pid"
 wait "$pid"
 status=$?
-stderr=$(cat "$dir.err")
-lines=$(printf '%s\n' "$stderr" | grep -c .)
-echo "exit status $status, stderr: $stderr"
-[ "$status" -eq "$expected_status" ] || { echo "FAIL: expected exit status $expected_status"; exit 1; }
-[ "$lines" -eq 1 ] || { echo "FAIL: expected one line on stderr, got $lines"; exit 1; }
-case "$stderr" in
-  *"stopped by SIG$signal"*) ;;
-  *) echo "FAIL: stderr does not say 'stopped by SIG$signal'"; exit 1 ;;
-esac
+check_one_line_error "$status" "$(cat "$dir.err")" "$expected_status" "stopped by SIG$signal" ||
+  exit 1
 check_complete_outputs "$dir" || { echo "FAIL: an output is not whole"; exit 1; }
 if [ "$command" = run ]; then
   meshes=$(ls "$dir" | grep -c '^frame_.*\.obj$')
