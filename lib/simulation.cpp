@@ -96,13 +96,15 @@ struct Adaptation {
   int merges = 0;
 };
 
-/// Refines where the criteria ask for it, then coarsens where the cloth has calmed down.
-Adaptation adapt(ClothComplex& lcc, const AdaptiveSettings& adaptive,
-                 const SpringSettings& springs) {
+/// Refines where the sizing field asks for it, then coarsens where the cloth has calmed down.
+Adaptation adapt(ClothComplex& lcc, const Scenario& scenario, double time_s) {
+  const AdaptiveSettings& adaptive = scenario.adaptive;
+  const SizingInputs inputs{&scenario.solver.obstacles, time_s};
   Adaptation changes;
-  changes.splits = refine(lcc, adaptive.refinement, springs).splits;
+  changes.splits = refine(lcc, adaptive.refinement, scenario.springs, inputs).splits;
   if (adaptive.hysteresis > 0.0) {
-    changes.merges = coarsen(lcc, adaptive.refinement, adaptive.hysteresis, springs).merges;
+    changes.merges =
+        coarsen(lcc, adaptive.refinement, adaptive.hysteresis, scenario.springs, inputs).merges;
   }
   return changes;
 }
@@ -178,7 +180,7 @@ Adaptation adapt_frame(const Scenario& scenario, int frame, ClothComplex& lcc,
   Adaptation changes;
   edit_and_recompile(lcc, cloth, [&](ClothComplex& complex) {
     if (!due) return false;
-    changes = adapt(complex, scenario.adaptive, scenario.springs);
+    changes = adapt(complex, scenario, cloth.state.time);
     return changes.splits + changes.merges > 0;
   });
   return changes;

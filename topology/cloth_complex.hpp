@@ -73,12 +73,21 @@ struct Particle {
   /// An end of a torn edge: the crack's lips and tips are left alone by coarsening. Copied to
   /// every particle a tear splits off it.
   bool on_crack = false;
+  /// For a particle made by a split: how many adaptation passes in a row found its bisection calm
+  /// enough to undo (coarsen.hpp); coarsening waits for RefinementOptions::coarsen_after_passes.
+  int calm_passes = 0;
 };
 
 /// Rest data of a face.
 struct FaceRest {
   double rest_area = 0.0;      ///< area in material coordinates (m^2)
   double areal_density = 0.0;  ///< mass per rest area (kg/m^2)
+  /// Rest area of the input face this face was cut from (m^2): the reference of the bending
+  /// springs' scaling across levels (spring_assignment.hpp). Splits copy it to both halves.
+  double input_area = 0.0;
+  /// The sizing field at the last adaptation pass: 1 / (target edge length)^2 in rest space
+  /// (1/m^2), sizing_field.hpp. Splits copy it to both halves until the next pass.
+  double sizing_per_m2 = 0.0;
 };
 
 struct ClothItems {

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "topology/complex_navigation.hpp"
-#include "topology/edge_measures.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/local_update.hpp"
 #include "topology/rest_geometry.hpp"
+#include "topology/sizing_field.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -75,19 +75,13 @@ std::optional<Bisection> bisection_at(ClothComplex& lcc, Vertex_handle m) {
   return std::nullopt;
 }
 
-/// Whether every edge of the faces around `middle` is below `hysteresis` x each threshold of `o`.
-bool calm_around(const ClothComplex& lcc, Vertex_const_handle middle, const RefinementOptions& o,
-                 double hysteresis) {
-  for (Dart_const_handle d : darts_leaving(lcc, middle)) {
-    for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
-      if (o.strain_threshold > 0.0 && edge_strain(lcc, e) >= hysteresis * o.strain_threshold) {
-        return false;
-      }
-      if (o.curvature_threshold_rad > 0.0 &&
-          edge_dihedral_angle(lcc, e) >= hysteresis * o.curvature_threshold_rad) {
-        return false;
-      }
-    }
+/// Whether the parent edge of `b` would be short enough for every face around its middle: its
+/// length in each face's sizing metric below `hysteresis` (so that a restored triangle is not
+/// split again at the next pass).
+bool calm_around(const ClothComplex& lcc, const Bisection& b, double hysteresis) {
+  const double limit = hysteresis * hysteresis / (b.parent_edge_m * b.parent_edge_m);
+  for (Dart_const_handle d : darts_leaving(lcc, Vertex_const_handle(b.middle))) {
+    if (!(lcc.info<2>(d).sizing_per_m2 < limit)) return false;
   }
   return true;
 }
@@ -135,7 +129,8 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
 }  // namespace
 
 CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
-                         const SpringSettings& settings) {
+                         const SpringSettings& settings, const SizingInputs& inputs) {
+  compute_sizing(lcc, options, inputs);
   CoarseningReport report;
   std::vector<Vertex_handle> created;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
@@ -149,8 +144,13 @@ CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, do
   });
   for (Vertex_handle v : created) {
     const std::optional<Bisection> b = bisection_at(lcc, v);
-    if (!b || !calm_around(lcc, b->middle, options, hysteresis)) continue;
-    if (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m) continue;
+    int& calm_passes = v->info().calm_passes;
+    if (!b || !calm_around(lcc, *b, hysteresis) ||
+        (options.max_edge_length_m > 0.0 && b->parent_edge_m > options.max_edge_length_m)) {
+      calm_passes = 0;
+      continue;
+    }
+    if (++calm_passes < options.coarsen_after_passes) continue;
     undo(lcc, *b, settings);
     ++report.merges;
   }

@@ -4,6 +4,7 @@
 
 #include "topology/cloth_complex.hpp"
 #include "topology/refinement_options.hpp"
+#include "topology/sizing_field.hpp"
 #include "topology/spring_settings.hpp"
 
 namespace tissu {
@@ -15,8 +16,9 @@ struct CoarseningReport {
 /// One coarsening pass, by decreasing Particle::level: every particle created by refinement
 /// (source_index -1; a midpoint pinned because its edge was clamped too) and not on a crack, whose
 /// neighbourhood is still that of one bisection (the two halves of its parent edge plus one or
-/// two cut edges), and around which every edge is below `hysteresis` x each threshold of
-/// `options` (a threshold of 0 does not hold coarsening back), is removed: its cut edges are
+/// two cut edges), and whose parent edge is shorter than `hysteresis` in the sizing metric of
+/// every face around it (compute_sizing with `options` and `inputs`, sizing_field.hpp) for
+/// options.coarsen_after_passes passes in a row (Particle::calm_passes), is removed: its cut edges are
 /// deleted (remove_cell<1>), then the vertex (remove_cell<0>), restoring the parent triangles.
 /// Particles of the input mesh are never removed. Rest areas, masses and springs are recomputed
 /// around each change; the removed particle's momentum is handed to the free corners so that the
@@ -24,6 +26,6 @@ struct CoarseningReport {
 /// particle's mass times its distance to the parent edge's midpoint, which is zero while the cloth
 /// is unbent).
 CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
-                         const SpringSettings& settings);
+                         const SpringSettings& settings, const SizingInputs& inputs = {});
 
 }  // namespace tissu

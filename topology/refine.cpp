@@ -4,8 +4,8 @@
 #include <set>
 
 #include "topology/complex_navigation.hpp"
-#include "topology/edge_measures.hpp"
 #include "topology/rest_geometry.hpp"
+#include "topology/sizing_field.hpp"
 #include "topology/split_edge.hpp"
 
 namespace tissu {
@@ -78,13 +78,6 @@ int bisect_queued(ClothComplex& lcc, const SplitQueue& queue, std::size_t partic
   return splits;
 }
 
-bool over_threshold(const ClothComplex& lcc, Dart_const_handle d, const RefinementOptions& o) {
-  return (o.max_edge_length_m > 0.0 && edge_rest_length_m(lcc, d) > o.max_edge_length_m) ||
-         (o.strain_threshold > 0.0 && edge_strain(lcc, d) > o.strain_threshold) ||
-         (o.curvature_threshold_rad > 0.0 &&
-          edge_dihedral_angle(lcc, d) > o.curvature_threshold_rad);
-}
-
 }  // namespace
 
 int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edge_length_m,
@@ -98,19 +91,17 @@ int refine_around_vertex(ClothComplex& lcc, Vertex_handle vertex, double min_edg
 }
 
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
-                        const SpringSettings& settings) {
+                        const SpringSettings& settings, const SizingInputs& inputs) {
+  compute_sizing(lcc, options, inputs);
   RefinementReport report;
-  // the longest edge of each triangle next to an edge over a threshold, in traversal order so
-  // that runs are reproducible
+  // the longest edge of each triangle coarser than the field wants, in traversal order so that
+  // runs are reproducible
   SplitQueue to_split;
   std::set<Dart_const_handle> queued;
-  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
-    if (!over_threshold(lcc, d, options)) continue;
-    ++report.candidate_edges;
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    if (!(face_metric_length2(lcc, d) > 1.0)) continue;
+    ++report.candidate_faces;
     queue_longest_edge(lcc, d, options.min_edge_length_m, queued, to_split);
-    if (!lcc.is_free<2>(d)) {
-      queue_longest_edge(lcc, lcc.opposite<2>(d), options.min_edge_length_m, queued, to_split);
-    }
   }
   report.splits =
       bisect_queued(lcc, to_split, static_cast<std::size_t>(options.max_particles), settings);

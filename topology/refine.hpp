@@ -1,22 +1,23 @@
 #pragma once
 /// \file
-/// One refinement pass over the cloth by strain and curvature.
+/// One refinement pass over the cloth by its sizing field.
 
 #include "topology/cloth_complex.hpp"
 #include "topology/refinement_options.hpp"
+#include "topology/sizing_field.hpp"
 #include "topology/spring_settings.hpp"
 
 namespace tissu {
 
-/// Finds the edges over a threshold of `options` (measured by edge_strain and edge_dihedral_angle,
-/// edge_measures.hpp), then bisects the longest rest-space edge of each triangle next to one of
-/// them, skipping edges shorter than twice min_edge_length_m and stopping at max_particles. A
+/// Computes the sizing field of `options` (compute_sizing, sizing_field.hpp), then bisects the
+/// longest rest-space edge of each triangle coarser than the field wants (face_metric_length2 > 1),
+/// skipping edges shorter than twice min_edge_length_m and stopping at max_particles. A
 /// bisection first bisects the neighbour across the edge when the edge is not its longest too
 /// (Rivara's longest-edge propagation path), so the mesh stays conforming and no triangle gets
 /// worse than half the smallest initial angle. Masses, rest areas and springs are updated locally
 /// after each split (split_edge). Triangle cloths only.
 RefinementReport refine(ClothComplex& lcc, const RefinementOptions& options,
-                        const SpringSettings& settings);
+                        const SpringSettings& settings, const SizingInputs& inputs = {});
 
 /// Bisects, along its longest-edge propagation path, the longest edge of each triangle around
 /// `vertex` whose rest length is at least twice `min_edge_length_m`, until the cloth has

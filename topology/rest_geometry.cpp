@@ -30,6 +30,7 @@ void assign_face_rest(ClothComplex& lcc, double areal_density_kg_per_m2) {
   for (auto face = lcc.attributes<2>().begin(); face != lcc.attributes<2>().end(); ++face) {
     face->info().rest_area = face_rest_area(lcc, face->dart());
     face->info().areal_density = areal_density_kg_per_m2;
+    face->info().input_area = face->info().rest_area;
   }
 }
 

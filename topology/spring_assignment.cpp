@@ -14,10 +14,12 @@
 namespace tissu {
 namespace {
 
+/// A spring of `kind` with the given stiffness, and the kind's damping times `damping_factor`.
 StoredSpring make_spring(const SpringKindSettings& kind, double stiffness_n_per_m,
-                         double rest_length_m) {
+                         double rest_length_m, double damping_factor = 1.0) {
   if (!kind.enabled || !(rest_length_m > 0.0)) return StoredSpring{SpringSlot::absent, 0, 0, 0};
-  return StoredSpring{SpringSlot::present, stiffness_n_per_m, kind.damping, rest_length_m};
+  return StoredSpring{SpringSlot::present, stiffness_n_per_m, damping_factor * kind.damping,
+                      rest_length_m};
 }
 
 Eigen::Vector3d rest_vector(const ClothComplex& lcc, Dart_const_handle dart) {
@@ -75,6 +77,26 @@ FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
                                                       : "triangles and rectangles");
 }
 
+/// The factor on the scenario's bending stiffness for the spring across the edge of `dart`, whose
+/// faces were cut from input faces (FaceRest::input_area) by refinement. A bending spring across a
+/// hinge of size s (the two faces' rest area A ~ s^2) shortens by about s theta^2 / 4 when the
+/// hinge folds by theta, storing k s^2 theta^4 / 32; at a curvature kappa the hinge folds by
+/// theta ~ kappa s, and there are ~1/s^2 hinges per unit area, so the cloth stores ~k s^4 kappa^4
+/// per unit area. The same cloth at every level therefore needs k ~ 1/s^4:
+///   k = k_scenario (A_input / A)^2,
+/// exactly 1 on the input mesh, 4 per bisection (each halves the area); the spring's damping scales
+/// alike, so that its damping rate stays that of the stiffness. The material rule
+/// (bending_spring_stiffness) is left as it is: it matches a plate at one fold angle per hinge.
+double bending_level_factor(const ClothComplex& lcc, Dart_const_handle dart) {
+  const FaceRest& own = lcc.info<2>(dart);
+  const FaceRest& across = lcc.info<2>(lcc.opposite<2>(dart));
+  const double input_m2 = own.input_area + across.input_area;
+  const double now_m2 = own.rest_area + across.rest_area;
+  if (!(input_m2 > 0.0) || !(now_m2 > 0.0)) return 1.0;  // a complex built without input areas
+  const double ratio = input_m2 / now_m2;
+  return ratio * ratio;
+}
+
 }  // namespace
 
 void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings& settings) {
@@ -97,7 +119,8 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
     const Vertex_const_handle here = vertex_after_edge(lcc, d);
     const Vertex_const_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
     if (here != across) {
-      double stiffness = settings.bending.stiffness;
+      const double level_factor = bending_level_factor(lcc, d);
+      double stiffness = settings.bending.stiffness * level_factor;
       if (material) {
         // from the same dart of the pair on both, so that the two darts agree to the bit
         const Dart_handle e = std::min(d, lcc.opposite<2>(d));
@@ -110,7 +133,8 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
       }
       edge.bending =
           make_spring(settings.bending, stiffness,
-                      rest_distance_m(here->info().rest_position, across->info().rest_position));
+                      rest_distance_m(here->info().rest_position, across->info().rest_position),
+                      material ? 1.0 : level_factor);
     }
   }
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -223,7 +224,7 @@ void read_environment(JsonObjectReader environment, Environment& e) {
   environment.finish();
 }
 
-AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
+AdaptiveSettings read_adaptive(JsonObjectReader adaptive, double frame_rate_hz) {
   AdaptiveSettings a;
   RefinementOptions& r = a.refinement;
   a.enabled = adaptive.boolean_or("enabled", true);
@@ -235,6 +236,13 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive) {
       adaptive.number_or("min_edge_length", r.min_edge_length_m, positive(" (m)"));
   r.max_edge_length_m = adaptive.number_or("max_edge_length", 0.0, non_negative(" (m)"));
   r.max_particles = adaptive.integer_or("max_particles", r.max_particles, 3, max_cloth_particles);
+  const double interval_s = a.every / frame_rate_hz;  // between two adaptation passes
+  r.lookahead_s = adaptive.number_or("lookahead", interval_s, between(0.0, 10.0, " (s)"));
+  r.obstacle_proximity = adaptive.boolean_or("obstacles", r.obstacle_proximity);
+  const double coarsen_after_s =
+      adaptive.number_or("coarsen_after", 0.1, between(0.0, 1e6, " (s)"));
+  r.coarsen_after_passes =
+      static_cast<int>(std::clamp(std::ceil(coarsen_after_s / interval_s - 1e-9), 1.0, 1e9));
   a.hysteresis =
       adaptive.number_or("hysteresis", a.hysteresis, {0.0, 0.999, false, "a number in [0, 1)"});
   if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0 &&
@@ -285,7 +293,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   if (top.has("self_collision")) {
     s.solver.self_collision = read_self_collision(top.object("self_collision"));
   }
-  if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"));
+  if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"), s.frame_rate);
   if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
   if (s.springs.material && s.solver.integrator == Integrator::projective_dynamics &&
       s.springs.material->formulation == StiffnessFormulation::delingette2008) {
