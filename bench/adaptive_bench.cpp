@@ -4,7 +4,7 @@
 // flag_uniform.json) and against the coarse mesh it starts from (adaptive.enabled=false). Reports
 // wall time per simulated second (remeshing and recompiling included), particle counts, and how
 // far each shape is from the uniform fine one at the same material points. Results and the
-// machine: docs/benchmarks.md; scripts/plot_adaptive.sh plots them. To try other settings, put
+// machine: docs/benchmarks.md. To try other settings, put
 // --set overrides for the adaptive runs in TISSU_ADAPTIVE_SET, separated by spaces, e.g.
 //   TISSU_ADAPTIVE_SET="adaptive.curvature=3 adaptive.every=2" adaptive_bench
 

@@ -18,8 +18,8 @@ struct CoarseningReport {
 /// neighbourhood is still that of one bisection (the two halves of its parent edge plus one or
 /// two cut edges), and whose parent edge is shorter than `hysteresis` in the sizing metric of
 /// every face around it (compute_sizing with `options` and `inputs`, sizing_field.hpp) for
-/// options.coarsen_after_passes passes in a row (Particle::calm_passes), is removed: its cut edges are
-/// deleted (remove_cell<1>), then the vertex (remove_cell<0>), restoring the parent triangles.
+/// options.coarsen_after_passes passes in a row (Particle::calm_passes), is removed: its cut edges
+/// are deleted (remove_cell<1>), then the vertex (remove_cell<0>), restoring the parent triangles.
 /// Particles of the input mesh are never removed. Rest areas, masses and springs are recomputed
 /// around each change; the removed particle's momentum is handed to the free corners so that the
 /// linear momentum of the free particles is unchanged (the centre of mass moves by at most the

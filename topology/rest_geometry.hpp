@@ -20,7 +20,8 @@ double edge_rest_length_m(const ClothComplex& lcc, Dart_const_handle dart);
 /// 1/2 sum_k p_k x p_{k+1}, exact for triangles and planar quads.
 double face_rest_area(const ClothComplex& lcc, Dart_const_handle dart);
 
-/// Sets every face's rest area and areal density, and makes it its own input face (FaceRest::input_area).
+/// Sets every face's rest area and areal density, and makes it its own input face
+/// (FaceRest::input_area).
 void assign_face_rest(ClothComplex& lcc, double areal_density_kg_per_m2);
 
 }  // namespace tissu
