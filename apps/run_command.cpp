@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "apps/stop_signals.hpp"
 #include "lib/progress.hpp"
+#include "lib/run_record.hpp"
 #include "lib/scenario/printable_text.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/scenario/scenario_limits.hpp"
@@ -51,69 +53,102 @@ std::string stopped_message(int signal_number, const RunResult& result, int fram
   return text;
 }
 
+/// How a run ended: its exit status, its state for run.json, and the line it prints on stderr.
+struct RunEnd {
+  int exit_status = 0;
+  std::string status;   ///< RunRecord::status
+  std::string message;  ///< without the "tissu: " prefix; "" for none
+};
+
+RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
+                  const std::filesystem::path& output_dir, StopRequest stop, RunRecord& record) {
+  RunOptions options;
+  options.output_dir = output_dir;
+  options.frames = command.frames;
+  options.stop = stop;
+  ProgressReporter progress = stderr_progress();
+  if (!command.quiet) {
+    options.on_setup = [](const std::string& stage) {
+      std::fprintf(stderr, "tissu: %s\n", stage.c_str());
+    };
+    options.on_frame = [&progress](const FrameStats& row) { progress(row); };
+    options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
+  }
+  std::string unconverged_warning;  // printed after the run, so as not to break the progress bar
+  options.on_warning = [&unconverged_warning](const std::string& w) { unconverged_warning = w; };
+  const RunResult result = run_scenario(scenario, options);
+  record.frames_done = result.frames_done;
+  if (!unconverged_warning.empty()) {
+    std::fprintf(stderr, "tissu: warning: %s; %d such steps in all\n", unconverged_warning.c_str(),
+                 result.unconverged_steps);
+  }
+  if (!result.video_warning.empty()) {
+    std::fprintf(stderr, "tissu: warning: %s\n", result.video_warning.c_str());
+  }
+  if (!result.ok) return {2, "failed", "simulation failed at " + result.failure};
+  if (result.stopped) {
+    const int signal_number = *stop.flag;
+    // a progress bar is left mid-line on a terminal
+    if (!command.quiet && isatty(STDERR_FILENO) == 1) std::fputc('\n', stderr);
+    return {stopped_exit_status(signal_number), "stopped",
+            stopped_message(signal_number, result, record.frames, scenario, output_dir)};
+  }
+  if (!command.quiet) {
+    std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,
+                 result.images, output_dir.c_str());
+  }
+  return {0, "completed", ""};
+}
+
 }  // namespace
 
 int execute(const RunCommand& command) {
   // SIGINT and SIGTERM stop the run after its last whole frame (apps/stop_signals.hpp)
   const StopRequest stop = install_stop_signals();
+  const auto start = std::chrono::steady_clock::now();
+  RunRecord record;
+  record.scenario_file = command.scenario;
+  record.overrides = command.overrides;
+  record.started_utc = utc_now_text();
+  std::optional<std::filesystem::path> output_dir;  // set once the scenario is loaded
+  RunEnd end{1, "error", ""};
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
     for (const std::string& note : scenario.notes)
       std::fprintf(stderr, "tissu: note: %s\n", note.c_str());
     // the process's thread count is the program's to set, not the library's
     if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
-    RunOptions options;
-    options.output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
-                                                    : std::filesystem::path(command.output_dir);
-    options.frames = command.frames;
-    options.stop = stop;
-    ProgressReporter progress = stderr_progress();
-    if (!command.quiet) {
-      options.on_setup = [](const std::string& stage) {
-        std::fprintf(stderr, "tissu: %s\n", stage.c_str());
-      };
-      options.on_frame = [&progress](const FrameStats& row) { progress(row); };
-      options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
-    }
-    std::string unconverged_warning;  // printed after the run, so as not to break the progress bar
-    options.on_warning = [&unconverged_warning](const std::string& w) { unconverged_warning = w; };
-    const RunResult result = run_scenario(scenario, options);
-    if (!unconverged_warning.empty()) {
-      std::fprintf(stderr, "tissu: warning: %s; %d such steps in all\n",
-                   unconverged_warning.c_str(), result.unconverged_steps);
-    }
-    if (!result.video_warning.empty()) {
-      std::fprintf(stderr, "tissu: warning: %s\n", result.video_warning.c_str());
-    }
-    if (!result.ok) {
-      std::fprintf(stderr, "tissu: simulation failed at %s\n", result.failure.c_str());
-      return 2;
-    }
-    if (result.stopped) {
-      const int signal_number = *stop.flag;
-      // a progress bar is left mid-line on a terminal
-      const bool mid_line = !command.quiet && isatty(STDERR_FILENO) == 1;
-      std::fprintf(stderr, "%stissu: %s\n", mid_line ? "\n" : "",
-                   stopped_message(signal_number, result, options.frames.value_or(scenario.frames),
-                                   scenario, options.output_dir)
-                       .c_str());
-      return stopped_exit_status(signal_number);
-    }
-    if (!command.quiet) {
-      std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,
-                   result.images, options.output_dir.c_str());
-    }
-    return 0;
+    record.threads = omp_get_max_threads();
+    record.frames = command.frames.value_or(scenario.frames);
+    output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
+                                            : std::filesystem::path(command.output_dir);
+    end = run_loaded(command, scenario, *output_dir, stop, record);
   } catch (const ScenarioError& e) {
-    std::fprintf(stderr, "tissu: %s\n", e.what());
+    end.message = e.what();
   } catch (const MeshError& e) {
-    std::fprintf(stderr, "tissu: %s\n", e.what());
+    end.message = e.what();
   } catch (const PinError& e) {
-    std::fprintf(stderr, "tissu: %s\n", e.what());
+    end.message = e.what();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "tissu: error: %s\n", e.what());
+    end.message = std::string("error: ") + e.what();
   }
-  return 1;
+  if (!end.message.empty()) std::fprintf(stderr, "tissu: %s\n", end.message.c_str());
+  if (output_dir && std::filesystem::is_directory(*output_dir)) {
+    record.status = end.status;
+    record.exit_status = end.exit_status;
+    record.message = end.message;
+    record.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    try {
+      write_run_record(*output_dir, record);
+    } catch (const FileWriteError& e) {  // a full disk: the error above already says so
+      if (end.exit_status == 0) {
+        std::fprintf(stderr, "tissu: %s\n", e.what());
+        return 1;
+      }
+    }
+  }
+  return end.exit_status;
 }
 
 void print_errors_on_one_line(CLI::App& app, const std::string& program) {

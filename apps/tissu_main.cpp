@@ -4,15 +4,19 @@
 #include <cstdio>
 #include <optional>
 
+#include "apps/check_command.hpp"
 #include "apps/material_test_command.hpp"
 #include "apps/passive_openmp.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
+#include "lib/version_info.hpp"
 
 int main(int argc, char** argv) {
   tissu::prefer_passive_openmp_waiting(argv);
   CLI::App app{"tissu: adaptive mass-spring cloth simulator"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tissu ") + tissu::tissu_version() + " (commit " +
+                                        tissu::tissu_commit() + ")");
   tissu::print_errors_on_one_line(app, "tissu");
 
   tissu::RunCommand run;
@@ -20,6 +24,11 @@ int main(int argc, char** argv) {
   run_app->add_option("scenario", run.scenario, "scenario JSON file (schema: docs/scenario.md)")
       ->required();
   tissu::add_run_options(*run_app, run);
+
+  tissu::CheckCommand check;
+  CLI::App* check_app = app.add_subcommand(
+      "check", "validate a scenario, its meshes and pins without running it; print it resolved");
+  tissu::add_check_options(*check_app, check);
 
   tissu::RenderCommand render;
   CLI::App* render_app =
@@ -34,6 +43,7 @@ int main(int argc, char** argv) {
 
   if (const std::optional<int> status = tissu::parse_command_line(app, argc, argv)) return *status;
   if (run_app->parsed()) return tissu::execute(run);
+  if (check_app->parsed()) return tissu::execute(check);
   if (material_test_app->parsed()) return tissu::execute(material_test);
   return tissu::execute(render);
 }

@@ -24,7 +24,7 @@ StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics
   m_file.append(
       "frame,time,particles,springs,faces,pinned,total_mass,kinetic_energy,"
       "potential_energy,step_ms,unconverged_steps,splits,merges,contacts,self_contacts,"
-      "collision_ms,tears,pieces,boundary_edges\n");
+      "collision_ms,tears,pieces,boundary_edges,pin_force,max_stretch\n");
 }
 
 void StatsCsv::write(const FrameStats& r) {
@@ -35,13 +35,15 @@ void StatsCsv::write(const FrameStats& r) {
   check_finite(file, r, "potential_energy", r.potential_energy);
   check_finite(file, r, "step_ms", r.step_ms);
   check_finite(file, r, "collision_ms", r.collision_ms);
+  check_finite(file, r, "pin_force", r.pin_force);
+  check_finite(file, r, "max_stretch", r.max_stretch);
   std::ostringstream out;
   out.precision(17);
   out << r.frame << ',' << r.time << ',' << r.particles << ',' << r.springs << ',' << r.faces << ','
       << r.pinned << ',' << r.total_mass << ',' << r.kinetic_energy << ',' << r.potential_energy
       << ',' << r.step_ms << ',' << r.unconverged_steps << ',' << r.splits << ',' << r.merges << ','
       << r.contacts << ',' << r.self_contacts << ',' << r.collision_ms << ',' << r.tears << ','
-      << r.pieces << ',' << r.boundary_edges << '\n';
+      << r.pieces << ',' << r.boundary_edges << ',' << r.pin_force << ',' << r.max_stretch << '\n';
   m_file.append(out.str());
 }
 

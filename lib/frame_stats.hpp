@@ -31,6 +31,12 @@ struct FrameStats {
   int tears = 0;              ///< edges torn (by strain or a cut) during the frame
   int pieces = 0;             ///< connected pieces of cloth at the end of the frame
   int boundary_edges = 0;     ///< edges with a face on one side only, tears included
+  /// |force the pins exert on the cloth| (N), solver/pin_reaction.hpp: at rest, the weight they
+  /// carry
+  double pin_force = 0.0;
+  /// the largest engineering strain l / l0 - 1 of a structural spring (dimensionless; -1 when
+  /// there is none)
+  double max_stretch = 0.0;
 };
 
 /// Writes stats.csv: a header line, then one line per frame, each handed to the operating system

@@ -8,9 +8,12 @@
 #include "lib/cloth_setup.hpp"
 #include "lib/obstacle_mesh.hpp"
 #include "lib/render_frames.hpp"
+#include "lib/run_folder.hpp"
 #include "lib/tear_step.hpp"
 #include "solver/energy.hpp"
+#include "solver/pin_reaction.hpp"
 #include "solver/speed_limit.hpp"
+#include "solver/spring_strain.hpp"
 #include "solver/step.hpp"
 #include "topology/coarsen.hpp"
 #include "topology/compile.hpp"
@@ -71,6 +74,8 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.tears = steps.tears;
   s.pieces = count_pieces(lcc);
   s.boundary_edges = count_boundary_edges(lcc);
+  s.pin_force = pin_reaction_force(m, environment, cloth.state).norm();
+  s.max_stretch = max_spring_strain(m, cloth.state.x, SpringKind::structural);
   return s;
 }
 
@@ -237,10 +242,26 @@ std::string unconverged_message(const Scenario& scenario, int frame, int unconve
 
 }  // namespace
 
+ClothSummary check_scenario(const Scenario& scenario) {
+  ClothComplex lcc;
+  build_scenario_cloth(scenario, lcc);
+  const CompiledCloth cloth = compile(lcc);
+  const SpringModel& m = cloth.model;
+  return {m.particle_count(), static_cast<int>(lcc.attributes<2>().size()), m.spring_count(),
+          static_cast<int>(std::count(m.pinned.begin(), m.pinned.end(), 1)), total_mass(m)};
+}
+
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   const int frame_count = options.frames.value_or(scenario.frames);
   const OutputOptions& output = scenario.output;
   std::filesystem::create_directories(options.output_dir);
+  if (const int removed = remove_earlier_run(options.output_dir, scenario.name);
+      removed > 0 && options.on_setup) {
+    options.on_setup("removed " + std::to_string(removed) + " files of an earlier run from " +
+                     options.output_dir.string());
+  }
+  if (!scenario.resolved_json.empty())
+    write_resolved_scenario(options.output_dir, scenario.resolved_json, frame_count);
 
   ClothComplex lcc;
   build_scenario_cloth(scenario, lcc, options.on_setup);

@@ -16,9 +16,12 @@
 namespace tissu {
 
 struct RunOptions {
-  std::filesystem::path output_dir = "out";  ///< created if missing; files in it are overwritten
-  std::optional<int> frames;                 ///< overrides the scenario's frame count
-  /// called before each setup stage of a large cloth (lib/cloth_setup.hpp: reading a mesh file of
+  /// created if missing; the files an earlier run left in it are removed first
+  /// (lib/run_folder.hpp), then scenario.json is written (Scenario::resolved_json)
+  std::filesystem::path output_dir = "out";
+  std::optional<int> frames;  ///< overrides the scenario's frame count
+  /// called with one line when files of an earlier run were removed, and before each setup stage
+  /// of a large cloth (lib/cloth_setup.hpp: reading a mesh file of
   /// 16 MiB or more; building and compiling a cloth of 100,000 faces or more) with one line
   /// saying what it does, e.g. "compiling the solver's model: 1000000 particles"
   std::function<void(const std::string&)> on_setup;
@@ -43,6 +46,19 @@ struct RunResult {
   std::string video_warning;  ///< set when a video was asked for and not made
   bool stopped = false;       ///< ended early because options.stop was requested
 };
+
+/// The cloth a scenario builds, as `tissu check` reports it.
+struct ClothSummary {
+  int particles = 0;
+  int faces = 0;
+  int springs = 0;
+  int pinned = 0;
+  double total_mass_kg = 0.0;
+};
+
+/// Builds and compiles the cloth of `scenario` as a run would, without stepping it or writing
+/// anything: bad meshes or pins throw MeshError or PinError, as run_scenario does.
+ClothSummary check_scenario(const Scenario& scenario);
 
 /// Runs `scenario`. Bad meshes or pins throw (MeshError, PinError) before the first step; a solver
 /// failure stops the run with ok = false after writing the last good state. Each frame writes its

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <type_traits>
 
 #include "lib/scenario/printable_text.hpp"
 
@@ -60,6 +61,11 @@ std::string number_text(double x) {
   return out.str();
 }
 
+/// The copy of `key` of the object a reader reads in the resolved scenario, or null.
+nlohmann::json* resolved_child(nlohmann::json* resolved, std::string_view key) {
+  return resolved ? &(*resolved)[std::string(key)] : nullptr;
+}
+
 }  // namespace
 
 NumberRule positive(std::string unit) {
@@ -73,16 +79,35 @@ NumberRule between(double min, double max, std::string unit) {
           "a number between " + number_text(min) + " and " + number_text(max) + unit};
 }
 
-JsonObjectReader::JsonObjectReader(const nlohmann::json& object, std::string file, std::string path)
-    : m_object(object), m_file(std::move(file)), m_path(std::move(path)) {}
+JsonObjectReader::JsonObjectReader(const nlohmann::json& object, std::string file, std::string path,
+                                   nlohmann::json* resolved)
+    : m_object(object), m_file(std::move(file)), m_path(std::move(path)), m_resolved(resolved) {}
+
+JsonObjectReader object_reader(const ArrayElement& element, const std::string& file) {
+  return object_reader(*element.value, file, element.path, element.resolved);
+}
 
 JsonObjectReader object_reader(const nlohmann::json& value, const std::string& file,
-                               const std::string& path) {
+                               const std::string& path, nlohmann::json* resolved) {
   if (!value.is_object()) {
     throw ScenarioError(file + ": " + (path.empty() ? "top level" : path) +
                         ": expected an object {...}, got " + describe(value));
   }
-  return JsonObjectReader(value, file, path);
+  return JsonObjectReader(value, file, path, resolved);
+}
+
+void JsonObjectReader::resolve(std::string_view key, nlohmann::json value) {
+  if (m_resolved) (*m_resolved)[std::string(key)] = std::move(value);
+}
+
+template <class T>
+T JsonObjectReader::fall_back(std::string_view key, T fallback) {
+  if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+    resolve(key, {fallback.x(), fallback.y(), fallback.z()});
+  } else {
+    resolve(key, fallback);
+  }
+  return fallback;
 }
 
 std::string JsonObjectReader::key_path(std::string_view key) const {
@@ -131,7 +156,7 @@ double JsonObjectReader::number(std::string_view key, const NumberRule& rule) {
 }
 
 double JsonObjectReader::number_or(std::string_view key, double fallback, const NumberRule& rule) {
-  return has(key) ? number(key, rule) : fallback;
+  return has(key) ? number(key, rule) : fall_back(key, fallback);
 }
 
 int JsonObjectReader::integer(std::string_view key, int min, int max) {
@@ -144,11 +169,11 @@ int JsonObjectReader::integer(std::string_view key, int min, int max) {
 }
 
 int JsonObjectReader::integer_or(std::string_view key, int fallback, int min, int max) {
-  return has(key) ? integer(key, min, max) : fallback;
+  return has(key) ? integer(key, min, max) : fall_back(key, fallback);
 }
 
 bool JsonObjectReader::boolean_or(std::string_view key, bool fallback) {
-  if (!has(key)) return fallback;
+  if (!has(key)) return fall_back(key, fallback);
   const nlohmann::json& value = get(key, "true or false");
   if (!value.is_boolean()) fail(key, "true or false");
   return value.get<bool>();
@@ -175,7 +200,7 @@ std::string JsonObjectReader::choice(std::string_view key,
 
 std::string JsonObjectReader::choice_or(std::string_view key, std::string fallback,
                                         const std::vector<std::string>& allowed) {
-  return has(key) ? choice(key, allowed) : fallback;
+  return has(key) ? choice(key, allowed) : fall_back(key, std::move(fallback));
 }
 
 Eigen::Vector3d JsonObjectReader::vector3(std::string_view key) {
@@ -192,7 +217,7 @@ Eigen::Vector3d JsonObjectReader::vector3(std::string_view key) {
 
 Eigen::Vector3d JsonObjectReader::vector3_or(std::string_view key,
                                              const Eigen::Vector3d& fallback) {
-  return has(key) ? vector3(key) : fallback;
+  return has(key) ? vector3(key) : fall_back(key, fallback);
 }
 
 Eigen::Vector3d JsonObjectReader::direction_or(std::string_view key,
@@ -203,16 +228,30 @@ Eigen::Vector3d JsonObjectReader::direction_or(std::string_view key,
 }
 
 JsonObjectReader JsonObjectReader::object(std::string_view key) {
-  return object_reader(get(key, "an object {...}"), m_file, key_path(key));
+  return object_reader(get(key, "an object {...}"), m_file, key_path(key),
+                       resolved_child(m_resolved, key));
 }
 
-std::vector<std::pair<const nlohmann::json*, std::string>> JsonObjectReader::array(
-    std::string_view key) {
+const nlohmann::json& empty_json_object() {
+  static const nlohmann::json empty = nlohmann::json::object();
+  return empty;
+}
+
+JsonObjectReader JsonObjectReader::optional_object(std::string_view key,
+                                                   const nlohmann::json& when_absent) {
+  if (has(key)) return object(key);
+  resolve(key, when_absent);
+  return JsonObjectReader(when_absent, m_file, key_path(key), resolved_child(m_resolved, key));
+}
+
+std::vector<ArrayElement> JsonObjectReader::array(std::string_view key) {
   const nlohmann::json& value = get(key, "an array [...]");
   if (!value.is_array()) fail(key, "an array [...]");
-  std::vector<std::pair<const nlohmann::json*, std::string>> out;
+  nlohmann::json* resolved = resolved_child(m_resolved, key);
+  std::vector<ArrayElement> out;
   for (std::size_t k = 0; k < value.size(); ++k) {
-    out.emplace_back(&value[k], key_path(key) + "[" + std::to_string(k) + "]");
+    out.push_back({&value[k], key_path(key) + "[" + std::to_string(k) + "]",
+                   resolved ? &(*resolved)[k] : nullptr});
   }
   return out;
 }

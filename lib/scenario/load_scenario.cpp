@@ -199,11 +199,9 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
   s.solver.implicit.cg_max_iterations =
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.threads = simulation.integer_or("threads", 0, 0, 1024);
-  if (simulation.has("pd")) s.solver.pd = read_pd(simulation.object("pd"));
-  if (simulation.has("newton")) s.solver.newton = read_newton(simulation.object("newton"));
-  if (simulation.has("quasi_newton")) {
-    s.solver.quasi_newton = read_quasi_newton(simulation.object("quasi_newton"));
-  }
+  s.solver.pd = read_pd(simulation.optional_object("pd"));
+  s.solver.newton = read_newton(simulation.optional_object("newton"));
+  s.solver.quasi_newton = read_quasi_newton(simulation.optional_object("quasi_newton"));
   simulation.finish();
 }
 
@@ -283,18 +281,21 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
 
   Scenario s;
   s.file = file;
-  JsonObjectReader top = object_reader(root, name, "");
+  nlohmann::json resolved = root;  // the readers add the defaults they fall back on
+  JsonObjectReader top = object_reader(root, name, "", &resolved);
   s.name = read_name(top, file);
+  top.resolve("name", s.name);
+  // a section left out is switched off: read as {"enabled": false}, which fills its defaults in
+  static const nlohmann::json switched_off = {{"enabled", false}};
   read_cloth(top.object("cloth"), s);
   s.pins = read_pins(top);
-  if (top.has("environment")) read_environment(top.object("environment"), s.solver.environment);
+  read_environment(top.optional_object("environment"), s.solver.environment);
   read_simulation(top.object("simulation"), s);
   s.solver.obstacles = read_obstacles(top, s.notes);
-  if (top.has("self_collision")) {
-    s.solver.self_collision = read_self_collision(top.object("self_collision"));
-  }
-  if (top.has("adaptive")) s.adaptive = read_adaptive(top.object("adaptive"), s.frame_rate);
-  if (top.has("tearing")) s.tearing = read_tearing(top.object("tearing"));
+  s.solver.self_collision =
+      read_self_collision(top.optional_object("self_collision", switched_off));
+  s.adaptive = read_adaptive(top.optional_object("adaptive", switched_off), s.frame_rate);
+  s.tearing = read_tearing(top.optional_object("tearing", switched_off));
   if (s.springs.material && s.solver.integrator == Integrator::projective_dynamics &&
       s.springs.material->formulation == StiffnessFormulation::delingette2008) {
     throw ScenarioError(name +
@@ -312,9 +313,11 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
                         std::string(to_string(s.springs.material->formulation)) +
                         "\", defined on rectangles");
   }
-  if (top.has("output")) read_output(top.object("output"), s.output);
-  if (top.has("render")) s.render = read_render(top.object("render"));
+  read_output(top.optional_object("output"), s.output);
+  s.render = read_render(top.optional_object("render", switched_off));
   top.finish();
+  // replace: a string set by --set may hold bytes that are not UTF-8
+  s.resolved_json = resolved.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
   return s;
 }
 

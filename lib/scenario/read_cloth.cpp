@@ -126,15 +126,16 @@ Side read_side(JsonObjectReader& pin) {
 std::vector<Corner> read_corners(JsonObjectReader& pin) {
   const std::vector<std::string> names = {"bottom_left", "bottom_right", "top_left", "top_right"};
   std::vector<Corner> corners;
-  for (const auto& [element, path] : pin.array("corners")) {
-    const auto it = element->is_string()
-                        ? std::find(names.begin(), names.end(), element->get<std::string>())
+  for (const ArrayElement& element : pin.array("corners")) {
+    const nlohmann::json& name = *element.value;
+    const auto it = name.is_string()
+                        ? std::find(names.begin(), names.end(), name.get<std::string>())
                         : names.end();
     if (it == names.end()) {
-      throw ScenarioError(pin.file() + ": " + path +
+      throw ScenarioError(pin.file() + ": " + element.path +
                           ": expected one of \"bottom_left\", \"bottom_right\", \"top_left\", "
                           "\"top_right\", got " +
-                          element->dump());
+                          name.dump());
     }
     corners.push_back(static_cast<Corner>(it - names.begin()));
   }
@@ -182,6 +183,8 @@ void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
     const std::filesystem::path file = mesh.string("file");
     if (file.empty()) mesh.fail("file", "the path of a mesh file, not an empty string");
     scenario.cloth.mesh_file = file.is_absolute() ? file : scenario.file.parent_path() / file;
+    // absolute, so that the resolved scenario runs from any folder
+    mesh.resolve("file", std::filesystem::absolute(scenario.cloth.mesh_file).string());
     scenario.cloth.frame = read_frame(mesh);
     mesh.finish();
   }
@@ -198,11 +201,8 @@ void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
     scenario.areal_density = cloth.number("density", positive(" (kg/m^2)"));
   }
   // with a material, "springs" only switches kinds off or sets their damping
-  static const nlohmann::json no_springs = nlohmann::json::object();
   JsonObjectReader springs =
-      from_material && !cloth.has("springs")
-          ? object_reader(no_springs, cloth.file(), cloth.key_path("springs"))
-          : cloth.object("springs");
+      from_material ? cloth.optional_object("springs") : cloth.object("springs");
   scenario.springs.structural = read_spring_kind(springs, "structural", from_material);
   scenario.springs.shear = read_spring_kind(springs, "shear", from_material);
   scenario.springs.bending = read_spring_kind(springs, "bending", from_material);
@@ -217,8 +217,8 @@ void read_cloth(JsonObjectReader cloth, Scenario& scenario) {
 std::vector<PinSelector> read_pins(JsonObjectReader& top) {
   std::vector<PinSelector> pins;
   if (!top.has("pins")) return pins;
-  for (const auto& [element, path] : top.array("pins")) {
-    pins.push_back(read_pin(object_reader(*element, top.file(), path)));
+  for (const ArrayElement& element : top.array("pins")) {
+    pins.push_back(read_pin(object_reader(element, top.file())));
   }
   return pins;
 }

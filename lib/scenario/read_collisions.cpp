@@ -17,8 +17,8 @@ ObstacleMotion read_motion(JsonObjectReader motion) {
   ObstacleMotion m;
   m.velocity = motion.vector3_or("velocity", m.velocity);
   if (motion.has("keyframes")) {
-    for (const auto& [element, path] : motion.array("keyframes")) {
-      JsonObjectReader key = object_reader(*element, motion.file(), path);
+    for (const ArrayElement& element : motion.array("keyframes")) {
+      JsonObjectReader key = object_reader(element, motion.file());
       const double time_s = key.number("time", non_negative(" (s)"));
       if (!m.key_times_s.empty() && time_s <= m.key_times_s.back()) {
         key.fail("time", "a time after the previous keyframe's " +
@@ -54,6 +54,7 @@ std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
   if (given.empty()) o.fail("file", "the path of a mesh file, not an empty string");
   const std::filesystem::path file =
       given.is_absolute() ? given : std::filesystem::path(o.file()).parent_path() / given;
+  o.resolve("file", std::filesystem::absolute(file).string());  // runs from any folder
   const double scale =
       o.number_or("scale", 1.0, between(min_obstacle_scale, max_obstacle_scale, ""));
   const Eigen::Matrix3d rotation =
@@ -116,8 +117,8 @@ Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
 std::vector<Obstacle> read_obstacles(JsonObjectReader& top, std::vector<std::string>& notes) {
   std::vector<Obstacle> obstacles;
   if (!top.has("obstacles")) return obstacles;
-  for (const auto& [element, path] : top.array("obstacles")) {
-    obstacles.push_back(read_obstacle(object_reader(*element, top.file(), path), notes));
+  for (const ArrayElement& element : top.array("obstacles")) {
+    obstacles.push_back(read_obstacle(object_reader(element, top.file()), notes));
   }
   return obstacles;
 }

@@ -48,14 +48,14 @@ TearingSettings read_tearing(JsonObjectReader tearing) {
   o.tip_min_edge_length_m =
       tearing.number_or("tip_min_edge_length", o.tip_min_edge_length_m, non_negative(" (m)"));
   if (tearing.has("weak_regions")) {
-    for (const auto& [element, path] : tearing.array("weak_regions")) {
-      o.weak_regions.push_back(read_weak_region(object_reader(*element, tearing.file(), path)));
+    for (const ArrayElement& element : tearing.array("weak_regions")) {
+      o.weak_regions.push_back(read_weak_region(object_reader(element, tearing.file())));
     }
   }
   if (tearing.has("cuts")) {
-    for (const auto& [element, path] : tearing.array("cuts")) {
+    for (const ArrayElement& element : tearing.array("cuts")) {
       const double after_s = t.cuts.empty() ? 0.0 : t.cuts.back().time_s;
-      t.cuts.push_back(read_cut(object_reader(*element, tearing.file(), path), after_s));
+      t.cuts.push_back(read_cut(object_reader(element, tearing.file()), after_s));
     }
   }
   tearing.finish();  // a misspelt key first: it may be why nothing tears

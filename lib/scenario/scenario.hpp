@@ -78,6 +78,10 @@ struct Scenario {
   /// Remarks from loading that are not errors (e.g. an obstacle mesh's dropped duplicate faces),
   /// one line each, naming the file and key; the apps print them before running.
   std::vector<std::string> notes;
+  /// The scenario as run, as JSON text: the file after the overrides, with every default read
+  /// filled in and mesh paths made absolute (the run folder's scenario.json); it loads again as
+  /// this same scenario.
+  std::string resolved_json;
 
   /// Whether the run bisects triangles (adaptive refinement, or refinement around crack tips):
   /// quads are then cut into triangles before it starts.

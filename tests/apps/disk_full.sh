@@ -32,16 +32,19 @@ expect_refused() {
 expect_refused mesh 64 "frame_00000.obj: cannot write mesh: File too large" \
   --set "cloth.grid.resolution=[60,60]"
 [ ! -e "$out/mesh/frame_00000.obj" ] || { echo "FAIL mesh: frame_00000.obj written"; failures=$((failures + 1)); }
-# stats.csv outgrows 2 KiB after a few frames: it ends with its last whole row
-expect_refused stats 2 "stats.csv: cannot write statistics: File too large" \
+# scenario.json (about 2.4 kB), the first file a run writes, over a 1 KiB limit
+expect_refused scenario 1 "scenario.json: cannot write resolved scenario: File too large"
+[ ! -e "$out/scenario/stats.csv" ] || { echo "FAIL scenario: stats.csv written"; failures=$((failures + 1)); }
+# stats.csv outgrows 4 KiB after a few frames: it ends with its last whole row
+expect_refused stats 4 "stats.csv: cannot write statistics: File too large" \
   --frames 200 --set output.meshes=false
 # the same for binary PLY
 expect_refused ply 64 "frame_00000.ply: cannot write mesh: File too large" \
   --set output.mesh_format=ply --set "cloth.grid.resolution=[60,60]"
-# a rendered image (about 3 kB) over a 1 KiB limit
-expect_refused png 1 "frame_00000.png: cannot write PNG image: File too large" \
+# a rendered image (about 11 kB) over an 8 KiB limit
+expect_refused png 8 "frame_00000.png: cannot write PNG image: File too large" \
   --frames 1 --set output.meshes=false --set render.enabled=true --set render.video=false \
-  --set render.width=320 --set render.height=240
+  --set render.width=640 --set render.height=480
 
 [ $failures -eq 0 ] && echo ok
 exit $((failures > 0))
