@@ -61,9 +61,11 @@ struct RunEnd {
 };
 
 RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
-                  const std::filesystem::path& output_dir, StopRequest stop, RunRecord& record) {
+                  const std::filesystem::path& output_dir, StopRequest stop, RunRecord& record,
+                  bool& folder_taken) {
   RunOptions options;
   options.output_dir = output_dir;
+  options.on_folder_taken = [&folder_taken] { folder_taken = true; };
   options.frames = command.frames;
   options.stop = stop;
   ProgressReporter progress = stderr_progress();
@@ -110,7 +112,8 @@ int execute(const RunCommand& command) {
   record.scenario_file = command.scenario;
   record.overrides = command.overrides;
   record.started_utc = utc_now_text();
-  std::optional<std::filesystem::path> output_dir;  // set once the scenario is loaded
+  std::filesystem::path output_dir;
+  bool folder_taken = false;  // run.json goes only into a folder this run has cleared
   RunEnd end{1, "error", ""};
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
@@ -122,7 +125,7 @@ int execute(const RunCommand& command) {
     record.frames = command.frames.value_or(scenario.frames);
     output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                             : std::filesystem::path(command.output_dir);
-    end = run_loaded(command, scenario, *output_dir, stop, record);
+    end = run_loaded(command, scenario, output_dir, stop, record, folder_taken);
   } catch (const ScenarioError& e) {
     end.message = e.what();
   } catch (const MeshError& e) {
@@ -133,14 +136,14 @@ int execute(const RunCommand& command) {
     end.message = std::string("error: ") + e.what();
   }
   if (!end.message.empty()) std::fprintf(stderr, "tissu: %s\n", end.message.c_str());
-  if (output_dir && std::filesystem::is_directory(*output_dir)) {
+  if (folder_taken) {
     record.status = end.status;
     record.exit_status = end.exit_status;
     record.message = end.message;
     record.wall_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
-      write_run_record(*output_dir, record);
+      write_run_record(output_dir, record);
     } catch (const FileWriteError& e) {  // a full disk: the error above already says so
       if (end.exit_status == 0) {
         std::fprintf(stderr, "tissu: %s\n", e.what());

@@ -116,4 +116,21 @@ void AppendFile::append(std::string_view record) {
   m_size += static_cast<long long>(record.size());
 }
 
+void AppendFile::overwrite(long long offset, std::string_view bytes) {
+  // through a descriptor of its own: on Linux, pwrite(2) on an O_APPEND one appends all the same
+  const int fd = ::open(m_file.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw FileWriteError(m_file, m_what, errno_text(errno));
+  int error = 0;
+  for (std::size_t done = 0; done < bytes.size() && error == 0;) {
+    const ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
+                               static_cast<off_t>(offset + static_cast<long long>(done)));
+    if (n > 0)
+      done += static_cast<std::size_t>(n);
+    else if (n == 0 || errno != EINTR)
+      error = n == 0 ? EIO : errno;
+  }
+  ::close(fd);
+  if (error != 0) throw FileWriteError(m_file, m_what, errno_text(error));
+}
+
 }  // namespace tissu

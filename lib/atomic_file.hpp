@@ -82,6 +82,9 @@ class AppendFile {
 
   /// Appends `record` whole, or throws FileWriteError and leaves the file as it was.
   void append(std::string_view record);
+  /// Rewrites bytes already written at `offset` (a header's record count) in place; throws
+  /// FileWriteError. Needs no new space, so a full disk does not refuse it.
+  void overwrite(long long offset, std::string_view bytes);
   const std::filesystem::path& file() const { return m_file; }
 
  private:

@@ -7,6 +7,7 @@
 
 #include "lib/cloth_setup.hpp"
 #include "lib/obstacle_mesh.hpp"
+#include "lib/point_cache.hpp"
 #include "lib/render_frames.hpp"
 #include "lib/run_folder.hpp"
 #include "lib/tear_step.hpp"
@@ -254,23 +255,28 @@ ClothSummary check_scenario(const Scenario& scenario) {
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   const int frame_count = options.frames.value_or(scenario.frames);
   const OutputOptions& output = scenario.output;
+  // the cloth first: a scenario refused for its mesh or pins leaves the folder as it was
+  ClothComplex lcc;
+  build_scenario_cloth(scenario, lcc, options.on_setup);
   std::filesystem::create_directories(options.output_dir);
   if (const int removed = remove_earlier_run(options.output_dir, scenario.name);
       removed > 0 && options.on_setup) {
     options.on_setup("removed " + std::to_string(removed) + " files of an earlier run from " +
                      options.output_dir.string());
   }
+  if (options.on_folder_taken) options.on_folder_taken();
   if (!scenario.resolved_json.empty())
     write_resolved_scenario(options.output_dir, scenario.resolved_json, frame_count);
 
-  ClothComplex lcc;
-  build_scenario_cloth(scenario, lcc, options.on_setup);
   if (options.on_setup && lcc.attributes<2>().size() >= large_cloth_faces) {
     options.on_setup("compiling the solver's model: " +
                      std::to_string(lcc.vertex_attributes().size()) + " particles");
   }
   CompiledCloth cloth = compile(lcc);
   StatsCsv stats(options.output_dir / "stats.csv");
+  std::optional<PointCacheFile> point_cache;
+  if (output.point_cache)
+    point_cache.emplace(options.output_dir / "frames.pc2", cloth.model.particle_count());
 
   const RenderSettings& render = scenario.render;
   std::vector<RenderFrame> to_render;
@@ -298,6 +304,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
                  output.mesh_format);
     }
     try {
+      if (point_cache) point_cache->append(cloth.state.x);
       stats.write(row);
     } catch (...) {  // the frame is not recorded: its mesh goes too, so that the two still agree
       std::error_code ignored;

@@ -16,9 +16,12 @@
 namespace tissu {
 
 struct RunOptions {
-  /// created if missing; the files an earlier run left in it are removed first
-  /// (lib/run_folder.hpp), then scenario.json is written (Scenario::resolved_json)
+  /// created if missing once the cloth is built (a refused mesh or pin leaves it untouched); the
+  /// files an earlier run left in it are removed first (lib/run_folder.hpp), then scenario.json
+  /// is written (Scenario::resolved_json)
   std::filesystem::path output_dir = "out";
+  /// called once the folder is this run's: earlier outputs removed, before scenario.json
+  std::function<void()> on_folder_taken;
   std::optional<int> frames;  ///< overrides the scenario's frame count
   /// called with one line when files of an earlier run were removed, and before each setup stage
   /// of a large cloth (lib/cloth_setup.hpp: reading a mesh file of

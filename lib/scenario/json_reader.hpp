@@ -65,6 +65,9 @@ class JsonObjectReader {
   /// none: an empty one gives only defaults, {"enabled": false} a section switched off.
   JsonObjectReader optional_object(std::string_view key,
                                    const nlohmann::json& when_absent = empty_json_object());
+  /// The reader would keep a reference to a temporary: pass a static object instead.
+  JsonObjectReader optional_object(std::string_view key,
+                                   const nlohmann::json&& when_absent) = delete;
   std::vector<ArrayElement> array(std::string_view key);
   std::vector<int> integers(std::string_view key, int min);
   /// Exactly `count` numbers, each obeying `rule`.

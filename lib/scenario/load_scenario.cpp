@@ -252,10 +252,18 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive, double frame_rate_hz) 
   return a;
 }
 
-void read_output(JsonObjectReader output, OutputOptions& o) {
+/// The "output" object; `fixed_particles` says whether the particles stay the same through the
+/// run (no refinement, no tearing), which a point cache needs.
+void read_output(JsonObjectReader output, OutputOptions& o, bool fixed_particles) {
   o.write_meshes = output.boolean_or("meshes", o.write_meshes);
   o.mesh_format = mesh_format_from_string(output.choice_or("mesh_format", "obj", {"obj", "ply"}));
   o.mesh_every = output.integer_or("mesh_every", 1, 1, std::numeric_limits<int>::max());
+  o.point_cache = output.boolean_or("point_cache", fixed_particles);
+  if (o.point_cache && !fixed_particles) {
+    output.fail("point_cache",
+                "false with adaptive refinement or tearing, which change the particles: a PC2 "
+                "cache holds one fixed set of points (the frame meshes carry such runs)");
+  }
   output.finish();
 }
 
@@ -313,7 +321,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
                         std::string(to_string(s.springs.material->formulation)) +
                         "\", defined on rectangles");
   }
-  read_output(top.optional_object("output"), s.output);
+  read_output(top.optional_object("output"), s.output, !s.refines_cloth() && !s.tearing.enabled);
   s.render = read_render(top.optional_object("render", switched_off));
   top.finish();
   // replace: a string set by --set may hold bytes that are not UTF-8

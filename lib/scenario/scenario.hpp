@@ -31,6 +31,9 @@ struct OutputOptions {
   bool write_meshes = true;  ///< one mesh file per written frame
   MeshFormat mesh_format = MeshFormat::obj;
   int mesh_every = 1;  ///< write every n-th frame's mesh (frame 0 always)
+  /// frames.pc2, every frame's positions (lib/point_cache.hpp); only while the particles stay
+  /// the same, so on by default without refinement or tearing
+  bool point_cache = false;
 };
 
 /// Images of the run, rendered after it with one camera for all frames.

@@ -22,6 +22,16 @@ check_complete_outputs() {
       echo "$file is cut short: $(tail -c 60 "$file")"; bad=1
     fi
   done
+  # frames.pc2: a 32-byte header, then as many whole samples (points x 3 float32) as it counts
+  if [ -e "$dir/frames.pc2" ]; then
+    local points samples size
+    points=$(od -An -t d4 -j 16 -N 4 "$dir/frames.pc2" | tr -d ' ')
+    samples=$(od -An -t d4 -j 28 -N 4 "$dir/frames.pc2" | tr -d ' ')
+    size=$(stat -c %s "$dir/frames.pc2")
+    if [ "$size" -ne $((32 + samples * points * 12)) ]; then
+      echo "frames.pc2 holds $size bytes, its header counts $samples samples of $points points"; bad=1
+    fi
+  fi
   # PNG images end with their IEND chunk
   for file in "$dir"/frame_*.png; do
     [ -e "$file" ] || continue

@@ -37,6 +37,9 @@ expect_refused scenario 1 "scenario.json: cannot write resolved scenario: File t
 [ ! -e "$out/scenario/stats.csv" ] || { echo "FAIL scenario: stats.csv written"; failures=$((failures + 1)); }
 # stats.csv outgrows 4 KiB after a few frames: it ends with its last whole row
 expect_refused stats 4 "stats.csv: cannot write statistics: File too large" \
+  --frames 200 --set output.meshes=false --set output.point_cache=false
+# frames.pc2 outgrows 8 KiB: it ends with its last whole sample, which its header counts
+expect_refused pc2 8 "frames.pc2: cannot write point cache: File too large" \
   --frames 200 --set output.meshes=false
 # the same for binary PLY
 expect_refused ply 64 "frame_00000.ply: cannot write mesh: File too large" \

@@ -35,4 +35,11 @@ record=$out/exploding/run.json
 [ "$(field status "$record")" = '"failed"' ] || fail "exploding status: $(field status "$record")"
 [ "$(field exit_status "$record")" = 2 ] || fail "exploding exit_status"
 grep -q '"message": "simulation failed at frame' "$record" || fail "no failure message"
+
+# a scenario refused for its mesh leaves an earlier run's folder as it was
+before=$(ls -l --time-style=full-iso "$out/tiny")
+"$tissu" run "$scenarios/missing_mesh.json" --out "$out/tiny" --quiet 2>/dev/null
+[ $? = 1 ] || fail "the missing mesh was not refused with exit status 1"
+[ "$(ls -l --time-style=full-iso "$out/tiny")" = "$before" ] ||
+  fail "a refused scenario changed the earlier run's folder"
 echo ok
