@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lib/cloth_setup.hpp"
+#include "lib/frame_arrays.hpp"
 #include "lib/obstacle_mesh.hpp"
 #include "lib/point_cache.hpp"
 #include "lib/render_frames.hpp"
@@ -78,6 +79,16 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.pin_force = pin_reaction_force(m, environment, cloth.state).norm();
   s.max_stretch = max_spring_strain(m, cloth.state.x, SpringKind::structural);
   return s;
+}
+
+/// Appends the frame's arrays (positions and velocities from the solver's state, which the complex
+/// was written back from) to frames.h5.
+void write_frame_arrays(FrameArraysFile& arrays, int frame, const CompiledCloth& cloth,
+                        const ClothComplex& lcc) {
+  const std::vector<Eigen::Vector3d> rest_m = rest_positions(lcc);
+  const std::vector<std::vector<int>> faces = current_mesh(lcc).faces;
+  arrays.append({frame, cloth.state.time, &cloth.state.x, &cloth.state.v, &rest_m,
+                 &cloth.model.mass, &faces, &cloth.model.pinned});
 }
 
 /// What image of the frame at `time_s` shows: the cloth, and the obstacles where they are then,
@@ -277,6 +288,11 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   std::optional<PointCacheFile> point_cache;
   if (output.point_cache)
     point_cache.emplace(options.output_dir / "frames.pc2", cloth.model.particle_count());
+  std::optional<FrameArraysFile> arrays;
+  if (output.arrays) {
+    arrays.emplace(options.output_dir / "frames.h5", scenario.frame_rate,
+                   !scenario.refines_cloth() && !scenario.tearing.enabled);
+  }
 
   const RenderSettings& render = scenario.render;
   std::vector<RenderFrame> to_render;
@@ -305,6 +321,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     }
     try {
       if (point_cache) point_cache->append(cloth.state.x);
+      if (arrays) write_frame_arrays(*arrays, frame, cloth, lcc);
       stats.write(row);
     } catch (...) {  // the frame is not recorded: its mesh goes too, so that the two still agree
       std::error_code ignored;

@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev ffmpeg
   gnuplot-nox # plots in docs/ (scripts/plot_pd_accuracy.sh)
+  libhdf5-dev # frames.h5, the run's arrays (lib/frame_arrays.hpp)
+  python3-h5py python3-numpy python3-matplotlib # the Python example that reads them (examples/)
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang libclang-rt-14-dev)

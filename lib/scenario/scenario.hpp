@@ -34,6 +34,9 @@ struct OutputOptions {
   /// frames.pc2, every frame's positions (lib/point_cache.hpp); only while the particles stay
   /// the same, so on by default without refinement or tearing
   bool point_cache = false;
+  /// frames.h5, every frame's positions, velocities, rest positions, triangles and pins
+  /// (lib/frame_arrays.hpp); off by default (about 80 bytes per particle and frame)
+  bool arrays = false;
 };
 
 /// Images of the run, rendered after it with one camera for all frames.

@@ -41,6 +41,19 @@ expect_refused stats 4 "stats.csv: cannot write statistics: File too large" \
 # frames.pc2 outgrows 8 KiB: it ends with its last whole sample, which its header counts
 expect_refused pc2 8 "frames.pc2: cannot write point cache: File too large" \
   --frames 200 --set output.meshes=false
+# frames.h5 outgrows 64 KiB: every frame group it keeps is whole, one per stats row
+expect_refused h5 64 "frames.h5: cannot write arrays: File too large" \
+  --frames 200 --set output.meshes=false --set output.point_cache=false --set output.arrays=true
+/usr/bin/python3 - "$out/h5" <<'PY' || failures=$((failures + 1))
+import sys, h5py
+folder = sys.argv[1]
+rows = sum(1 for _ in open(f"{folder}/stats.csv")) - 1
+with h5py.File(f"{folder}/frames.h5", "r") as f:
+    frames = f["frames"]
+    whole = all(len(frames[k]) == 6 for k in frames)
+    if len(frames) != rows or not whole:
+        sys.exit(f"FAIL h5: {len(frames)} frame groups (whole: {whole}) for {rows} stats rows")
+PY
 # the same for binary PLY
 expect_refused ply 64 "frame_00000.ply: cannot write mesh: File too large" \
   --set output.mesh_format=ply --set "cloth.grid.resolution=[60,60]"
