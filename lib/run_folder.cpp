@@ -24,7 +24,7 @@ std::string earlier_run_name(const fs::path& dir) {
 
 bool is_run_output_name(const std::string& name) {
   static const std::regex output(
-      R"((stats\.csv|scenario\.json|run\.json|frames\.pc2|frames\.h5|frame_\d{5}\.(obj|ply|png)|)"
+      R"((stats\.csv|scenario\.json|run\.json|frames\.pc2|frames\.h5|frame_\d{5}\.(obj|ply|png|glb)|)"
       R"(last_good_frame_\d{5}(_step_\d{2})?\.(obj|ply)))");
   static const std::regex temporary(R"(\.(.+)\.tmp\d+_\d+)");
   std::smatch parts;

@@ -11,8 +11,9 @@ namespace tissu {
 
 /// Whether `name`, a file name in a run folder, is one tissu writes there whatever the scenario:
 /// stats.csv, scenario.json, run.json, frames.pc2, frames.h5,
-/// frame_NNNNN.obj|.ply|.png,
-/// last_good_frame_*.obj|.ply, and the temporaries of those (".<name>.tmp<pid>_<n>", lib/atomic_file.hpp).
+/// frame_NNNNN.obj|.ply|.png|.glb,
+/// last_good_frame_*.obj|.ply, and the temporaries of those (".<name>.tmp<pid>_<n>",
+/// lib/atomic_file.hpp).
 bool is_run_output_name(const std::string& name);
 
 /// Removes from `dir` (when it exists) the files of an earlier run: every regular file that

@@ -313,19 +313,23 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits + steps.tip_splits;
     row.merges = changes.merges;
-    std::filesystem::path mesh_file;
-    if (output.write_meshes && (frame % output.mesh_every == 0 || frame == frame_count)) {
-      mesh_file = frame_file(options.output_dir, "frame_", frame, output.mesh_format);
-      write_mesh(mesh_file, current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
-                 output.mesh_format);
-    }
+    std::vector<std::filesystem::path> mesh_files;
+    auto write_frame_mesh = [&](MeshFormat format) {
+      mesh_files.push_back(frame_file(options.output_dir, "frame_", frame, format));
+      write_mesh(mesh_files.back(), current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
+                 format);
+    };
     try {
+      if (frame % output.mesh_every == 0 || frame == frame_count) {
+        if (output.write_meshes) write_frame_mesh(output.mesh_format);
+        if (output.glb) write_frame_mesh(MeshFormat::glb);
+      }
       if (point_cache) point_cache->append(cloth.state.x);
       if (arrays) write_frame_arrays(*arrays, frame, cloth, lcc);
       stats.write(row);
-    } catch (...) {  // the frame is not recorded: its mesh goes too, so that the two still agree
+    } catch (...) {  // the frame is not recorded: its meshes go too, so that the two still agree
       std::error_code ignored;
-      if (!mesh_file.empty()) std::filesystem::remove(mesh_file, ignored);
+      for (const std::filesystem::path& file : mesh_files) std::filesystem::remove(file, ignored);
       throw;
     }
     if (render.enabled && frame % render.every == 0) {

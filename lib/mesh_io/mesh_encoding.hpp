@@ -26,4 +26,11 @@ std::string obj_text(const IndexedMesh& mesh, const VertexRestData* rest);
 /// has UVs.
 std::string ply_bytes(const IndexedMesh& mesh, const VertexRestData* rest);
 
+/// The bytes of a glTF 2.0 binary (.glb) of `mesh`, for web viewers: positions (float32, m) and
+/// area-weighted vertex normals turned from tissu's z-up to glTF's y-up ((x, y, z) -> (x, z, -y)),
+/// triangles (a quad split along its first diagonal), TEXCOORD_0 the (u, v) of `texture_uvw` when
+/// given, one double-sided material; vertex k is vertex k of the mesh. Throws std::runtime_error
+/// with assimp's message if its exporter fails.
+std::string glb_bytes(const IndexedMesh& mesh, const std::vector<Eigen::Vector3d>* texture_uvw);
+
 }  // namespace tissu

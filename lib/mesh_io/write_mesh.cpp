@@ -70,7 +70,20 @@ void write(const std::filesystem::path& file, const IndexedMesh& mesh, const Ver
   check_faces(file, mesh);
   check_finite(file, mesh.vertices, "position");
   if (rest) check_finite(file, rest->rest_m, "rest position");
-  write_file(file, format == MeshFormat::obj ? obj_text(mesh, rest) : ply_bytes(mesh, rest));
+  switch (format) {
+    case MeshFormat::obj:
+      return write_file(file, obj_text(mesh, rest));
+    case MeshFormat::ply:
+      return write_file(file, ply_bytes(mesh, rest));
+    case MeshFormat::glb:
+      try {
+        return write_file(file, glb_bytes(mesh, rest ? &rest->texture_uvw : nullptr));
+      } catch (const FileWriteError&) {
+        throw;
+      } catch (const std::runtime_error& e) {
+        fail(file, e.what());
+      }
+  }
 }
 
 }  // namespace
@@ -82,8 +95,11 @@ MeshFormat mesh_format_from_string(std::string_view name) {
   if (name == "ply") {
     return MeshFormat::ply;
   }
+  if (name == "glb") {
+    return MeshFormat::glb;
+  }
   throw std::invalid_argument("unknown mesh format \"" + std::string(name) +
-                              "\": expected \"obj\" or \"ply\"");
+                              "\": expected \"obj\", \"ply\" or \"glb\"");
 }
 
 const char* extension(MeshFormat format) {
@@ -92,6 +108,8 @@ const char* extension(MeshFormat format) {
       return "obj";
     case MeshFormat::ply:
       return "ply";
+    case MeshFormat::glb:
+      return "glb";
   }
   return "";
 }

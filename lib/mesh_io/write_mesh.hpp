@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Writing a cloth's mesh to an OBJ or PLY file with tissu's own writers, e.g. one file per
-/// simulated frame: every vertex in order, in double precision, faces as they are.
+/// simulated frame: every vertex in order, in double precision, faces as they are; or to a glTF
+/// binary for the web, through assimp's exporter.
 
 #include <Eigen/Core>
 #include <filesystem>
@@ -17,13 +18,14 @@ namespace tissu {
 enum class MeshFormat {
   obj,  ///< Wavefront OBJ, text, without a material library
   ply,  ///< Stanford PLY, binary little-endian
+  glb,  ///< glTF 2.0 binary, for the web: float32, y-up, triangles (mesh_encoding.hpp, glb_bytes)
 };
 
 /// The format named `name` ("obj" or "ply"). Throws std::invalid_argument naming the accepted
 /// values otherwise.
 MeshFormat mesh_format_from_string(std::string_view name);
 
-/// The file name extension of `format`, without the dot: "obj" or "ply".
+/// The file name extension of `format`, without the dot: "obj", "ply" or "glb".
 const char* extension(MeshFormat format);
 
 /// Material (rest) coordinates written beside a mesh's positions, and the cloth frame in which

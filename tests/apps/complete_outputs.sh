@@ -32,6 +32,13 @@ check_complete_outputs() {
       echo "frames.pc2 holds $size bytes, its header counts $samples samples of $points points"; bad=1
     fi
   fi
+  # glTF binaries are as long as their header says (glTF 2.0, "Binary glTF Layout")
+  for file in "$dir"/frame_*.glb; do
+    [ -e "$file" ] || continue
+    if [ "$(od -An -t u4 -j 8 -N 4 "$file" | tr -d ' ')" != "$(stat -c %s "$file")" ]; then
+      echo "$file is cut short"; bad=1
+    fi
+  done
   # PNG images end with their IEND chunk
   for file in "$dir"/frame_*.png; do
     [ -e "$file" ] || continue

@@ -57,6 +57,9 @@ PY
 # the same for binary PLY
 expect_refused ply 64 "frame_00000.ply: cannot write mesh: File too large" \
   --set output.mesh_format=ply --set "cloth.grid.resolution=[60,60]"
+# the same for a glTF binary
+expect_refused glb 64 "frame_00000.glb: cannot write mesh: File too large" \
+  --set output.meshes=false --set output.glb=true --set "cloth.grid.resolution=[60,60]"
 # a rendered image (about 11 kB) over an 8 KiB limit
 expect_refused png 8 "frame_00000.png: cannot write PNG image: File too large" \
   --frames 1 --set output.meshes=false --set render.enabled=true --set render.video=false \

@@ -1,8 +1,8 @@
 """frames.h5 (issue 20) read back with h5py, as a user would: every frame of stats.csv is there,
 with arrays that agree with it (particles, pins, total mass, kinetic energy, time), with the PC2
-cache and with the OBJ meshes; for a torn cloth too, whose particles change; and the example in
-examples/ plots it.  usage: frame_arrays.py TISSU TINY_SCENARIO TEARING_SCENARIO EXAMPLE OUT_DIR"""
-import csv, os, shutil, struct, subprocess, sys
+cache, the OBJ meshes and the glTF binaries; for a torn cloth too, whose particles change; and
+the example in examples/ plots it.  usage: frame_arrays.py TISSU TINY_SCENARIO TEARING_SCENARIO EXAMPLE OUT_DIR"""
+import csv, json, os, shutil, struct, subprocess, sys
 
 import h5py
 import numpy as np
@@ -53,7 +53,7 @@ def check_against_stats(folder, rows, fixed):
 
 
 # a fixed cloth: the arrays match the PC2 cache and the last OBJ mesh
-rows = run(tiny, f"{out}/tiny")
+rows = run(tiny, f"{out}/tiny", "output.glb=true")
 last = check_against_stats(f"{out}/tiny", rows, 1)
 with open(f"{out}/tiny/frames.pc2", "rb") as f:
     header = f.read(32)
@@ -63,6 +63,15 @@ check(np.allclose(cache[-1], last, atol=1e-6), "tiny: frames.h5 disagrees with f
 obj = [line.split()[1:4] for line in open(f"{out}/tiny/frame_{len(rows) - 1:05d}.obj")
        if line.startswith("v ")]
 check(np.allclose(np.array(obj, dtype=float), last, atol=1e-9), "tiny: disagrees with the OBJ")
+# ... and the glTF binary of the same frame, y-up: (x, y, z) -> (x, z, -y)
+glb = open(f"{out}/tiny/frame_{len(rows) - 1:05d}.glb", "rb").read()
+json_length = struct.unpack("<I", glb[12:16])[0]
+gltf = json.loads(glb[20:20 + json_length])
+position = gltf["accessors"][gltf["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]
+view = gltf["bufferViews"][position["bufferView"]]
+start = 20 + json_length + 8 + view.get("byteOffset", 0) + position.get("byteOffset", 0)
+y_up = np.frombuffer(glb[start:start + 12 * position["count"]], dtype="<f4").reshape(-1, 3)
+check(np.allclose(y_up, last[:, [0, 2, 1]] * [1, 1, -1], atol=1e-6), "tiny: disagrees with the glb")
 
 # a cloth cut at its first step: the particle count changes, every frame still agrees
 rows = run(tearing, f"{out}/tearing", "simulation.frames=15", "render.enabled=false",

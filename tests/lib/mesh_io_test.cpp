@@ -139,6 +139,8 @@ TEST(WriteMesh, FaceOutOfRangeThrowsNamingFile) {
 TEST(MeshFormat, ParsesNamesAndGivesExtensions) {
   EXPECT_EQ(mesh_format_from_string("obj"), MeshFormat::obj);
   EXPECT_EQ(mesh_format_from_string("ply"), MeshFormat::ply);
+  EXPECT_EQ(mesh_format_from_string("glb"), MeshFormat::glb);
+  EXPECT_STREQ(extension(MeshFormat::glb), "glb");
   EXPECT_STREQ(extension(MeshFormat::obj), "obj");
   EXPECT_STREQ(extension(MeshFormat::ply), "ply");
 }
