@@ -9,6 +9,7 @@
 #include "apps/passive_openmp.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
+#include "apps/view_command.hpp"
 #include "lib/version_info.hpp"
 
 int main(int argc, char** argv) {
@@ -35,6 +36,11 @@ int main(int argc, char** argv) {
       app.add_subcommand("render", "re-render a folder of saved frame meshes, without simulating");
   tissu::add_render_options(*render_app, render);
 
+  tissu::ViewCommand view;
+  CLI::App* view_app = app.add_subcommand(
+      "view", "print the address of a run's browser viewer (plays its frames, with its curves)");
+  tissu::add_view_options(*view_app, view);
+
   tissu::MaterialTestCommand material_test;
   CLI::App* material_test_app = app.add_subcommand(
       "material-test",
@@ -44,6 +50,7 @@ int main(int argc, char** argv) {
   if (const std::optional<int> status = tissu::parse_command_line(app, argc, argv)) return *status;
   if (run_app->parsed()) return tissu::execute(run);
   if (check_app->parsed()) return tissu::execute(check);
+  if (view_app->parsed()) return tissu::execute(view);
   if (material_test_app->parsed()) return tissu::execute(material_test);
   return tissu::execute(render);
 }

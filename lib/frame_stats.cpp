@@ -20,30 +20,47 @@ void check_finite(const std::filesystem::path& file, const FrameStats& row, cons
 
 }  // namespace
 
+std::vector<StatsColumn> stats_columns(const FrameStats& r) {
+  return {{"frame", double(r.frame)},
+          {"time", r.time},
+          {"particles", double(r.particles)},
+          {"springs", double(r.springs)},
+          {"faces", double(r.faces)},
+          {"pinned", double(r.pinned)},
+          {"total_mass", r.total_mass},
+          {"kinetic_energy", r.kinetic_energy},
+          {"potential_energy", r.potential_energy},
+          {"step_ms", r.step_ms},
+          {"unconverged_steps", double(r.unconverged_steps)},
+          {"splits", double(r.splits)},
+          {"merges", double(r.merges)},
+          {"contacts", double(r.contacts)},
+          {"self_contacts", double(r.self_contacts)},
+          {"collision_ms", r.collision_ms},
+          {"tears", double(r.tears)},
+          {"pieces", double(r.pieces)},
+          {"boundary_edges", double(r.boundary_edges)},
+          {"pin_force", r.pin_force},
+          {"max_stretch", r.max_stretch}};
+}
+
 StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics") {
-  m_file.append(
-      "frame,time,particles,springs,faces,pinned,total_mass,kinetic_energy,"
-      "potential_energy,step_ms,unconverged_steps,splits,merges,contacts,self_contacts,"
-      "collision_ms,tears,pieces,boundary_edges,pin_force,max_stretch\n");
+  std::string header;
+  for (const StatsColumn& column : stats_columns(FrameStats{})) {
+    if (!header.empty()) header += ',';
+    header += column.name;
+  }
+  m_file.append(header + "\n");
 }
 
 void StatsCsv::write(const FrameStats& r) {
-  const std::filesystem::path& file = m_file.file();
-  check_finite(file, r, "time", r.time);
-  check_finite(file, r, "total_mass", r.total_mass);
-  check_finite(file, r, "kinetic_energy", r.kinetic_energy);
-  check_finite(file, r, "potential_energy", r.potential_energy);
-  check_finite(file, r, "step_ms", r.step_ms);
-  check_finite(file, r, "collision_ms", r.collision_ms);
-  check_finite(file, r, "pin_force", r.pin_force);
-  check_finite(file, r, "max_stretch", r.max_stretch);
+  const std::vector<StatsColumn> columns = stats_columns(r);
+  for (const StatsColumn& column : columns)
+    check_finite(m_file.file(), r, column.name, column.value);
   std::ostringstream out;
-  out.precision(17);
-  out << r.frame << ',' << r.time << ',' << r.particles << ',' << r.springs << ',' << r.faces << ','
-      << r.pinned << ',' << r.total_mass << ',' << r.kinetic_energy << ',' << r.potential_energy
-      << ',' << r.step_ms << ',' << r.unconverged_steps << ',' << r.splits << ',' << r.merges << ','
-      << r.contacts << ',' << r.self_contacts << ',' << r.collision_ms << ',' << r.tears << ','
-      << r.pieces << ',' << r.boundary_edges << ',' << r.pin_force << ',' << r.max_stretch << '\n';
+  out.precision(17);  // integers print as integers, doubles read back to the same value
+  for (std::size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << columns[k].value;
+  out << '\n';
   m_file.append(out.str());
 }
 

@@ -3,6 +3,7 @@
 /// One row of stats.csv.
 
 #include <filesystem>
+#include <vector>
 
 #include "lib/atomic_file.hpp"
 
@@ -38,6 +39,15 @@ struct FrameStats {
   /// there is none)
   double max_stretch = 0.0;
 };
+
+/// A column of stats.csv and its value in a row (integers exactly, as doubles).
+struct StatsColumn {
+  const char* name;
+  double value;
+};
+
+/// The columns of stats.csv, in order, with `row`'s values (docs/scenario.md, "Statistics").
+std::vector<StatsColumn> stats_columns(const FrameStats& row);
 
 /// Writes stats.csv: a header line, then one line per frame, each handed to the operating system
 /// as it is written (AppendFile), so that the file always ends with a whole row: a killed process

@@ -46,7 +46,13 @@ int remove_earlier_run(const fs::path& dir, const std::string& video_stem) {
     if (entry.is_regular_file() && (is_run_output_name(name) || videos.count(name)))
       to_remove.push_back(entry.path());
   }
+  // the browser viewer's folder (lib/viewer_frames.hpp): its three files, then the folder if empty
+  for (const char* name : {"index.html", "tissu_viewer.js", "frames.js"}) {
+    if (fs::is_regular_file(dir / "viewer" / name)) to_remove.push_back(dir / "viewer" / name);
+  }
   for (const fs::path& file : to_remove) fs::remove(file);
+  std::error_code not_empty;
+  fs::remove(dir / "viewer", not_empty);  // refused when it holds anything else
   return static_cast<int>(to_remove.size());
 }
 

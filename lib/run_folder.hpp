@@ -18,7 +18,8 @@ bool is_run_output_name(const std::string& name);
 
 /// Removes from `dir` (when it exists) the files of an earlier run: every regular file that
 /// is_run_output_name() accepts, and the videos <stem>.mp4 and <stem>.gif for `video_stem` and for
-/// the "name" in the scenario.json an earlier run left. Returns how many files it removed; throws
+/// the "name" in the scenario.json an earlier run left, and viewer/index.html, tissu_viewer.js and
+/// frames.js (the folder too, once empty). Returns how many files it removed; throws
 /// std::filesystem::filesystem_error naming the file it could not remove.
 int remove_earlier_run(const std::filesystem::path& dir, const std::string& video_stem);
 

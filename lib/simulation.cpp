@@ -12,6 +12,7 @@
 #include "lib/render_frames.hpp"
 #include "lib/run_folder.hpp"
 #include "lib/tear_step.hpp"
+#include "lib/viewer_frames.hpp"
 #include "solver/energy.hpp"
 #include "solver/pin_reaction.hpp"
 #include "solver/speed_limit.hpp"
@@ -288,6 +289,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   std::optional<PointCacheFile> point_cache;
   if (output.point_cache)
     point_cache.emplace(options.output_dir / "frames.pc2", cloth.model.particle_count());
+  std::optional<ViewerFramesFile> viewer;
+  if (output.viewer) viewer.emplace(options.output_dir / "viewer", scenario.name);
   std::optional<FrameArraysFile> arrays;
   if (output.arrays) {
     arrays.emplace(options.output_dir / "frames.h5", scenario.frame_rate,
@@ -326,6 +329,11 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       }
       if (point_cache) point_cache->append(cloth.state.x);
       if (arrays) write_frame_arrays(*arrays, frame, cloth, lcc);
+      if (viewer) {
+        RenderFrame shown = snapshot(lcc, scenario.solver.obstacles, cloth.state.time);
+        shown.frame = frame;
+        viewer->append(shown, row);
+      }
       stats.write(row);
     } catch (...) {  // the frame is not recorded: its meshes go too, so that the two still agree
       std::error_code ignored;

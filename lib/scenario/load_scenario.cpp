@@ -259,6 +259,7 @@ void read_output(JsonObjectReader output, OutputOptions& o, bool fixed_particles
   o.mesh_format = mesh_format_from_string(output.choice_or("mesh_format", "obj", {"obj", "ply"}));
   o.mesh_every = output.integer_or("mesh_every", 1, 1, std::numeric_limits<int>::max());
   o.glb = output.boolean_or("glb", o.glb);
+  o.viewer = output.boolean_or("viewer", o.viewer);
   o.point_cache = output.boolean_or("point_cache", fixed_particles);
   o.arrays = output.boolean_or("arrays", o.arrays);
   if (o.point_cache && !fixed_particles) {

@@ -33,6 +33,8 @@ struct OutputOptions {
   int mesh_every = 1;  ///< write every n-th frame's mesh (frame 0 always)
   /// also a glTF binary, frame_NNNNN.glb, at the frames whose mesh is due (whatever write_meshes)
   bool glb = false;
+  /// viewer/: the browser page and frames.js, every frame (lib/viewer_frames.hpp)
+  bool viewer = true;
   /// frames.pc2, every frame's positions (lib/point_cache.hpp); only while the particles stay
   /// the same, so on by default without refinement or tearing
   bool point_cache = false;
