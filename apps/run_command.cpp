@@ -98,6 +98,10 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   if (!command.quiet) {
     std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,
                  result.images, output_dir.c_str());
+    if (scenario.output.viewer) {
+      std::fprintf(stderr, "tissu: to play them in a browser: tissu view %s\n",
+                   output_dir.c_str());
+    }
   }
   return {0, "completed", ""};
 }
