@@ -44,6 +44,7 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
     scene.mesh = &frames[k].mesh;
     scene.pinned = frames[k].pinned;
     scene.face_strain = frames[k].face_strain;
+    scene.face_level = frames[k].face_level;
     scene.obstacles = frames[k].obstacles;
     scene.ground_height_m = frames[k].ground_height_m;
     char name[32];

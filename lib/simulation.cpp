@@ -97,6 +97,7 @@ void write_frame_arrays(FrameArraysFile& arrays, int frame, const CompiledCloth&
 RenderFrame snapshot(const ClothComplex& lcc, const std::vector<Obstacle>& obstacles,
                      double time_s) {
   RenderFrame frame{current_mesh(lcc), {}, face_edge_strain(lcc)};
+  frame.face_level = face_refinement_level(lcc);
   frame.pinned.resize(frame.mesh.vertices.size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     frame.pinned[v->info().index_at_last_compile] = v->info().pinned ? 1 : 0;

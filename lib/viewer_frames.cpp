@@ -100,16 +100,20 @@ void ViewerFramesFile::append(const RenderFrame& frame, const FrameStats& row) {
   f["positions"] = positions_base64(frame.mesh.vertices);
   std::vector<int> face_of_triangle;
   std::vector<std::uint32_t> triangles = triangles_of(frame.mesh.faces, &face_of_triangle);
-  if (triangles != m_triangles) {
+  // per triangle, from per face (0 where the frame has none)
+  auto per_triangle = [&](const std::vector<float>& per_face) {
+    std::vector<float> values(face_of_triangle.size(), 0.0f);
+    if (per_face.size() == frame.mesh.faces.size()) {
+      for (std::size_t t = 0; t < values.size(); ++t) values[t] = per_face[face_of_triangle[t]];
+    }
+    return base64(values.data(), values.size());
+  };
+  if (triangles != m_triangles) {  // the level changes only with the triangles
     f["triangles"] = base64(triangles.data(), triangles.size());
+    f["level"] = per_triangle(frame.face_level);
     m_triangles = std::move(triangles);
   }
-  std::vector<float> strain(face_of_triangle.size(), 0.0f);
-  if (frame.face_strain.size() == frame.mesh.faces.size()) {
-    for (std::size_t t = 0; t < strain.size(); ++t)
-      strain[t] = frame.face_strain[face_of_triangle[t]];
-  }
-  f["strain"] = base64(strain.data(), strain.size());
+  f["strain"] = per_triangle(frame.face_strain);
   std::vector<int> pinned;
   for (std::size_t v = 0; v < frame.pinned.size(); ++v)
     if (frame.pinned[v]) pinned.push_back(static_cast<int>(v));

@@ -3,7 +3,8 @@
 /// The browser viewer of a run (issue 20): OUT/viewer/index.html and tissu_viewer.js (the page
 /// and its bundled three.js, viewer/), copied at the start of a run, and frames.js, to which the
 /// run appends one line per recorded frame: `tissu.frame({...})` with the cloth's positions
-/// (float32, m, base64), its triangles and per-triangle strain when they changed, its pinned
+/// (float32, m, base64), per-triangle strain, its triangles and their refinement level when they
+/// changed, its pinned
 /// vertices, the obstacles, and the frame's stats.csv row. A classic script, so that the page
 /// plays from file:// with no server; whole lines only (AppendFile), so that a stopped run or a
 /// full disk leaves a page that plays the frames before. CGAL-free.

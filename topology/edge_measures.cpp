@@ -50,4 +50,15 @@ std::vector<float> face_edge_strain(const ClothComplex& lcc) {
   return strain;
 }
 
+std::vector<float> face_refinement_level(const ClothComplex& lcc) {
+  std::vector<float> level;
+  level.reserve(lcc.attributes<2>().size());
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    const FaceRest& face = lcc.info<2>(d);
+    const bool known = face.input_area > 0.0 && face.rest_area > 0.0;
+    level.push_back(known ? static_cast<float>(std::log2(face.input_area / face.rest_area)) : 0.0f);
+  }
+  return level;
+}
+
 }  // namespace tissu

@@ -25,4 +25,9 @@ double edge_dihedral_angle(const ClothComplex& lcc, Dart_const_handle dart);
 /// strain of its edges (edge_engineering_strain).
 std::vector<float> face_edge_strain(const ClothComplex& lcc);
 
+/// Per face, in the same order, its refinement level log2(A_input / A): 0 on an input face, 1
+/// per bisection (each halves the rest area), FaceRest::input_area over rest_area; 0 for a face
+/// without an input area.
+std::vector<float> face_refinement_level(const ClothComplex& lcc);
+
 }  // namespace tissu

@@ -37,6 +37,9 @@ void check_scene(const RenderScene& scene) {
     throw std::invalid_argument("render scene: " + std::to_string(scene.face_strain.size()) +
                                 " face strains for " + std::to_string(mesh.faces.size()) +
                                 " faces");
+  if (!scene.face_level.empty() && scene.face_level.size() != mesh.faces.size())
+    throw std::invalid_argument("render scene: " + std::to_string(scene.face_level.size()) +
+                                " face levels for " + std::to_string(mesh.faces.size()) + " faces");
 }
 
 void append(std::vector<float>& out, const Eigen::Vector3d& p) {
@@ -46,7 +49,7 @@ void append(std::vector<float>& out, const Eigen::Vector3d& p) {
 
 }  // namespace
 
-ClothGeometry cloth_geometry(const RenderScene& scene) {
+ClothGeometry cloth_geometry(const RenderScene& scene, ColorMode mode) {
   check_scene(scene);
   const IndexedMesh& mesh = *scene.mesh;
   const std::vector<Eigen::Vector3f> normals = vertex_normals(mesh);
@@ -55,7 +58,9 @@ ClothGeometry cloth_geometry(const RenderScene& scene) {
   std::vector<std::pair<int, int>> edges;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const std::vector<int>& face = mesh.faces[f];
-    const float strain = scene.face_strain.empty() ? 0.0f : scene.face_strain[f];
+    const std::vector<float>& values =
+        mode == ColorMode::level ? scene.face_level : scene.face_strain;
+    const float strain = values.empty() ? 0.0f : values[f];
     for (std::size_t i = 1; i + 1 < face.size(); ++i) {
       for (int v : {face[0], face[i], face[i + 1]}) {
         append(geometry.triangles, mesh.vertices[v]);

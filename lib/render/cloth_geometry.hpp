@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "lib/render/render_options.hpp"
 #include "lib/render/render_scene.hpp"
 
 namespace tissu {
@@ -22,9 +23,10 @@ struct ClothGeometry {
 /// Floats per triangle corner in ClothGeometry::triangles.
 inline constexpr int cloth_vertex_floats = 7;
 
-/// The geometry of `scene`. Throws std::invalid_argument when the mesh is missing, a face has
-/// fewer than 3 vertices or an id out of range, a position is not finite, or `pinned` or
-/// `face_strain` is neither empty nor of the mesh's vertex or face count.
-ClothGeometry cloth_geometry(const RenderScene& scene);
+/// The geometry of `scene`; its per-face value is the face's level for ColorMode::level, else its
+/// strain. Throws std::invalid_argument when the mesh is missing, a face has fewer than 3
+/// vertices or an id out of range, a position is not finite, or `pinned`, `face_strain` or
+/// `face_level` is neither empty nor of the mesh's vertex or face count.
+ClothGeometry cloth_geometry(const RenderScene& scene, ColorMode mode = ColorMode::shaded);
 
 }  // namespace tissu

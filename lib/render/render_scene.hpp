@@ -19,6 +19,8 @@ struct RenderScene {
   /// #F, the strain of each face for ColorMode::strain: (current area or edge length) / rest - 1,
   /// so 0 is at rest and 0.1 is 10 % stretched; empty: all zero.
   std::vector<float> face_strain;
+  /// #F, the refinement level of each face for ColorMode::level, log2(A_input / A); empty: all 0.
+  std::vector<float> face_level;
   std::optional<double> ground_height_m;  ///< height (z, m) of a horizontal ground plane, if any
   /// Rigid obstacles, not owned: closed triangle (or polygon) meshes, counter-clockwise seen from
   /// outside, positions (m) where they are at this frame's time. Empty: none.

@@ -203,7 +203,7 @@ struct Renderer::State {
 
   Image render(const RenderScene& scene, const Camera& camera) {
     validate_camera(camera);
-    const ClothGeometry geometry = cloth_geometry(scene);
+    const ClothGeometry geometry = cloth_geometry(scene, options.color_mode);
     const ObstacleGeometry solids = obstacle_geometry(scene.obstacles);
     const RenderOptions& o = options;
 
@@ -295,7 +295,10 @@ struct Renderer::State {
     draw(gl, obstacles, GL_TRIANGLES);
 
     upload(gl, cloth, geometry.triangles, cloth_vertex_floats);
-    gl.Uniform1i(uniform(surface_program, "u_mode"), o.color_mode == ColorMode::strain ? 1 : 0);
+    const int mode = o.color_mode == ColorMode::strain  ? 1
+                     : o.color_mode == ColorMode::level ? 3
+                                                        : 0;
+    gl.Uniform1i(uniform(surface_program, "u_mode"), mode);
     set_color(surface_program, "u_front_color", o.front_color);
     set_color(surface_program, "u_back_color", o.back_color);
     gl.PolygonOffset(1.0f, 2.0f);  // behind its own edges and pins

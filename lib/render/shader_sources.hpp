@@ -51,6 +51,14 @@ vec3 strain_color(float strain) {
   return t < 0.0 ? mix(white, blue, -t) : mix(white, red, t);
 }
 
+// refinement level: input faces light, each bisection darker (the viewer's palette, viewer/)
+vec3 level_color(float level) {
+  const vec3 colors[6] = vec3[6](vec3(0.95, 0.83, 0.63), vec3(0.91, 0.63, 0.38),
+                                 vec3(0.78, 0.39, 0.24), vec3(0.55, 0.24, 0.35),
+                                 vec3(0.29, 0.24, 0.47), vec3(0.12, 0.24, 0.39));
+  return colors[int(clamp(floor(level + 0.5), 0.0, 5.0))];
+}
+
 void main() {
   vec3 n = v_normal;
   if (dot(n, n) < 1e-24) n = cross(dFdx(v_position), dFdy(v_position));
@@ -66,7 +74,9 @@ void main() {
     frag_color = vec4(mix(lit, u_background_color, fade), 1.0);
     return;
   }
-  vec3 base = u_mode == 1 ? strain_color(v_strain) : (gl_FrontFacing ? u_front_color : u_back_color);
+  vec3 base = u_mode == 1   ? strain_color(v_strain)
+              : u_mode == 3 ? level_color(v_strain)
+                            : (gl_FrontFacing ? u_front_color : u_back_color);
   float specular = pow(max(dot(n, normalize(u_key_light + view)), 0.0), 40.0);
   vec3 color = base * (0.30 + 0.60 * key + 0.15 * fill) + vec3(0.07 * specular);
   frag_color = vec4(min(color, vec3(1.0)), 1.0);

@@ -172,6 +172,25 @@ TEST(Renderer, StrainModeColoursRestWhiteStretchRedAndCompressionBlue) {
   EXPECT_GT(compressed.z(), 2.0f * compressed.x()) << compressed.transpose();
 }
 
+TEST(Renderer, LevelModeColoursFinerFacesDarker) {
+  RenderOptions options = small_options();
+  options.color_mode = ColorMode::level;
+  Renderer renderer(options);
+  const IndexedMesh mesh = test::square_mesh(1.0, 2);
+  RenderScene scene = test::scene_of(mesh);
+  scene.face_strain.assign(mesh.faces.size(), 0.5f);  // ignored in this mode
+  const auto centre_at_level = [&](float level) {
+    scene.face_level.assign(mesh.faces.size(), level);
+    return color_at(renderer.render(scene, square_camera()), width / 2 + 10, height / 2 + 10);
+  };
+  const Eigen::Vector3f input = centre_at_level(0.0f);
+  const Eigen::Vector3f once = centre_at_level(1.0f);
+  const Eigen::Vector3f finer = centre_at_level(3.2f);  // rounds to 3
+  EXPECT_GT(input.sum(), once.sum() + 0.2f) << input.transpose() << " / " << once.transpose();
+  EXPECT_GT(once.sum(), finer.sum() + 0.2f) << once.transpose() << " / " << finer.transpose();
+  EXPECT_GT(input.x(), input.z()) << input.transpose();  // warm, not the strain map's white
+}
+
 TEST(Renderer, MarksPinnedParticles) {
   RenderOptions options = small_options();
   const IndexedMesh mesh = test::square_mesh(1.0, 2);

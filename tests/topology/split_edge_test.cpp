@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "cloth_test_support.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "topology/apply_pins.hpp"
 #include "topology/compile.hpp"
+#include "topology/edge_measures.hpp"
 #include "topology/validity.hpp"
 
 namespace tissu {
@@ -58,6 +61,19 @@ TEST_F(SplitEdgeTest, InteriorSplitAddsOneParticleTwoFacesAndConservesMass) {
   EXPECT_EQ(lcc.vertex_attribute(from_m)->info().source_index, -1);
   EXPECT_GT(lcc.vertex_attribute(from_m)->info().mass, 0.0);
   expect_invariants("after one interior split");
+}
+
+TEST_F(SplitEdgeTest, TheTwoFacesOfAnInteriorEdgeGoUpOneRefinementLevel) {
+  const std::vector<float> before = face_refinement_level(lcc);
+  for (float level : before) EXPECT_EQ(level, 0.0f);
+  split_edge(lcc, dart_between(8, 9), springs);
+  const std::vector<float> after = face_refinement_level(lcc);
+  ASSERT_EQ(after.size(), before.size() + 2);
+  // the edge's two triangles became four halves, each at level 1; the others stay at 0
+  EXPECT_EQ(
+      std::count_if(after.begin(), after.end(), [](float l) { return std::abs(l - 1.0f) < 1e-6f; }),
+      4);
+  EXPECT_EQ(std::count(after.begin(), after.end(), 0.0f), static_cast<long>(before.size()) - 2);
 }
 
 TEST_F(SplitEdgeTest, BoundarySplitAddsOneFace) {

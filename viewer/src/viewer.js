@@ -29,7 +29,8 @@ window.tissu = {
       stats: f.stats,
       positions: decode(f.positions, Float32Array),
       triangles: f.triangles ? decode(f.triangles, Uint32Array) : previous.triangles,
-      strain: f.strain ? decode(f.strain, Float32Array) : previous.strain,
+      strain: decode(f.strain, Float32Array),
+      level: f.triangles ? decode(f.level, Float32Array) : previous.level,
       pinned: f.pinned ?? previous.pinned,
       obstacles: (f.obstacles ?? []).map((o) => ({
         positions: decode(o.positions, Float32Array),
@@ -39,11 +40,19 @@ window.tissu = {
   },
 };
 
-/// Blue (no stretch) to red (10 % or more), as the PNG renderer colours strain.
+/// The PNG renderer's diverging map (lib/render/renderer.cpp): -10 % full blue, 0 white, +10 %
+/// full red, clamped beyond.
 function strainColour(strain, colour) {
-  const s = Math.min(Math.max(strain / 0.1, 0), 1);
-  colour.setRGB(0.25 + 0.7 * s, 0.45 * (1 - s) + 0.2, 0.85 * (1 - s) + 0.1);
-  return colour;
+  const s = Math.min(Math.max(strain / 0.1, -1), 1);
+  const blue = new THREE.Color(0.23, 0.3, 0.75);
+  const red = new THREE.Color(0.7, 0.02, 0.15);
+  return colour.setRGB(0.93, 0.93, 0.93).lerp(s < 0 ? blue : red, Math.abs(s));
+}
+
+/// One colour per refinement level: 0 (the input mesh) light, each bisection darker and bluer.
+const levelColours = [0xf2d3a0, 0xe8a060, 0xc8643c, 0x8c3c5a, 0x4a3c78, 0x1e3c64].map((c) => new THREE.Color(c));
+function levelColour(level, colour) {
+  return colour.copy(levelColours[Math.min(Math.max(Math.round(level), 0), levelColours.length - 1)]);
 }
 
 function clothGeometry(f, colouring) {
@@ -55,7 +64,9 @@ function clothGeometry(f, colouring) {
   for (let c = 0; c < count; ++c) {
     const v = f.triangles[c];
     positions.set(f.positions.subarray(3 * v, 3 * v + 3), 3 * c);
-    if (colouring === "strain") strainColour(f.strain[Math.floor(c / 3)], colour);
+    const t = Math.floor(c / 3);
+    if (colouring === "strain") strainColour(f.strain[t], colour);
+    else if (colouring === "level") levelColour(f.level[t], colour);
     else colour.setRGB(0.85, 0.6, 0.35);
     colour.toArray(colours, 3 * c);
   }
