@@ -13,6 +13,7 @@ packages=(
   libhdf5-dev # frames.h5, the run's arrays (lib/frame_arrays.hpp)
   python3-h5py python3-numpy python3-matplotlib # the Python example that reads them (examples/)
   chromium # the viewer's test in a real browser (tests/apps/viewer_in_chromium.sh)
+  blender # the point cache and glTF frames played in Blender (tests/apps/caches_in_blender.sh)
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang libclang-rt-14-dev)
