@@ -317,6 +317,13 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits + steps.tip_splits;
     row.merges = changes.merges;
+    // what the viewer and the renderer show of the frame, taken once for both
+    const bool rendered = render.enabled && frame % render.every == 0;
+    std::optional<RenderFrame> shown;
+    if (viewer || rendered) {
+      shown = snapshot(lcc, scenario.solver.obstacles, cloth.state.time);
+      shown->frame = frame;
+    }
     std::vector<std::filesystem::path> mesh_files;
     auto write_frame_mesh = [&](MeshFormat format) {
       mesh_files.push_back(frame_file(options.output_dir, "frame_", frame, format));
@@ -330,21 +337,14 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       }
       if (point_cache) point_cache->append(cloth.state.x);
       if (arrays) write_frame_arrays(*arrays, frame, cloth, lcc);
-      if (viewer) {
-        RenderFrame shown = snapshot(lcc, scenario.solver.obstacles, cloth.state.time);
-        shown.frame = frame;
-        viewer->append(shown, row);
-      }
+      if (viewer) viewer->append(*shown, row);
       stats.write(row);
     } catch (...) {  // the frame is not recorded: its meshes go too, so that the two still agree
       std::error_code ignored;
       for (const std::filesystem::path& file : mesh_files) std::filesystem::remove(file, ignored);
       throw;
     }
-    if (render.enabled && frame % render.every == 0) {
-      to_render.push_back(snapshot(lcc, scenario.solver.obstacles, cloth.state.time));
-      to_render.back().frame = frame;
-    }
+    if (rendered) to_render.push_back(std::move(*shown));
     if (options.on_frame) options.on_frame(row);
     if (options.on_surface) options.on_surface(frame, {current_mesh(lcc), rest_positions(lcc)});
   };
