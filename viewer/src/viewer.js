@@ -50,9 +50,13 @@ function strainColour(strain, colour) {
 }
 
 /// One colour per refinement level: 0 (the input mesh) light, each bisection darker and bluer.
-const levelColours = [0xf2d3a0, 0xe8a060, 0xc8643c, 0x8c3c5a, 0x4a3c78, 0x1e3c64].map((c) => new THREE.Color(c));
+const levelColours = [0xf2d3a0, 0xe8a060, 0xc8643c, 0x8c3c5a, 0x4a3c78, 0x1e3c64].map(
+  (c) => new THREE.Color(c),
+);
 function levelColour(level, colour) {
-  return colour.copy(levelColours[Math.min(Math.max(Math.round(level), 0), levelColours.length - 1)]);
+  return colour.copy(
+    levelColours[Math.min(Math.max(Math.round(level), 0), levelColours.length - 1)],
+  );
 }
 
 function clothGeometry(f, colouring) {
@@ -98,16 +102,24 @@ function drawPlots(canvas, shown) {
   columns.forEach((column, k) => {
     const values = run.frames.map((f) => f.stats[column]);
     const [low, high] = [Math.min(...values), Math.max(...values)];
-    const x = (t) => 40 + ((width - 50) * (t - time[0])) / Math.max(time[time.length - 1] - time[0], 1e-12);
-    const y = (v) => k * height + height - 18 - ((height - 34) * (v - low)) / Math.max(high - low, 1e-300);
+    const x = (t) =>
+      40 + ((width - 50) * (t - time[0])) / Math.max(time[time.length - 1] - time[0], 1e-12);
+    const y = (v) =>
+      k * height + height - 18 - ((height - 34) * (v - low)) / Math.max(high - low, 1e-300);
     context.fillStyle = "#444";
     context.font = "12px sans-serif";
     const value = values[shown];
-    context.fillText(`${column}  ${Number.isInteger(value) ? value : value.toPrecision(4)}`, 40, k * height + 12);
+    context.fillText(
+      `${column}  ${Number.isInteger(value) ? value : value.toPrecision(4)}`,
+      40,
+      k * height + 12,
+    );
     context.strokeStyle = "#1f6fb4";
     context.lineWidth = 2;
     context.beginPath();
-    values.forEach((v, i) => (i ? context.lineTo(x(time[i]), y(v)) : context.moveTo(x(time[i]), y(v))));
+    values.forEach((v, i) =>
+      i ? context.lineTo(x(time[i]), y(v)) : context.moveTo(x(time[i]), y(v)),
+    );
     context.stroke();
     context.strokeStyle = "#d33";
     context.beginPath();
@@ -135,18 +147,27 @@ function start() {
   sun.position.set(2, -3, 4);
   scene.add(sun);
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
-  camera.up.set(0, 0, 1);  // tissu's world is z-up
+  camera.up.set(0, 0, 1); // tissu's world is z-up
   const controls = new OrbitControls(camera, renderer.domElement);
 
-  const clothMaterial = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.9 });
+  const clothMaterial = new THREE.MeshStandardMaterial({
+    vertexColors: true,
+    side: THREE.DoubleSide,
+    roughness: 0.9,
+  });
   const cloth = new THREE.Mesh(new THREE.BufferGeometry(), clothMaterial);
-  const pins = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: 0xcc2222, size: 8, sizeAttenuation: false }));
+  const pins = new THREE.Points(
+    new THREE.BufferGeometry(),
+    new THREE.PointsMaterial({ color: 0xcc2222, size: 8, sizeAttenuation: false }),
+  );
   const obstacles = new THREE.Group();
   scene.add(cloth, pins, obstacles);
   const obstacleMaterial = new THREE.MeshStandardMaterial({ color: 0x8899aa, roughness: 0.6 });
 
   // the camera frames the first frame's cloth, from the front (-y) and a little above
-  const box = new THREE.Box3().setFromBufferAttribute(new THREE.BufferAttribute(run.frames[0].positions, 3));
+  const box = new THREE.Box3().setFromBufferAttribute(
+    new THREE.BufferAttribute(run.frames[0].positions, 3),
+  );
   const centre = box.getCenter(new THREE.Vector3());
   const size = Math.max(box.getSize(new THREE.Vector3()).length(), 0.1);
   camera.position.copy(centre).add(new THREE.Vector3(0.3 * size, -1.6 * size, 0.5 * size));
@@ -168,11 +189,19 @@ function start() {
     const pinned = new Float32Array(3 * f.pinned.length);
     f.pinned.forEach((v, k) => pinned.set(f.positions.subarray(3 * v, 3 * v + 3), 3 * k));
     pins.geometry.dispose();
-    pins.geometry = new THREE.BufferGeometry().setAttribute("position", new THREE.BufferAttribute(pinned, 3));
+    pins.geometry = new THREE.BufferGeometry().setAttribute(
+      "position",
+      new THREE.BufferAttribute(pinned, 3),
+    );
     obstacles.children.forEach((o) => o.geometry.dispose());
     obstacles.clear();
-    f.obstacles.forEach((o) => obstacles.add(new THREE.Mesh(indexedGeometry(o.positions, o.triangles), obstacleMaterial)));
-    status.textContent = `frame ${f.frame} (${index + 1} of ${run.frames.length}), t = ${f.stats.time.toFixed(3)} s, ${f.stats.particles} particles`;
+    f.obstacles.forEach((o) =>
+      obstacles.add(new THREE.Mesh(indexedGeometry(o.positions, o.triangles), obstacleMaterial)),
+    );
+    const time = f.stats.time.toFixed(3);
+    status.textContent =
+      `frame ${f.frame} (${index + 1} of ${run.frames.length}), ` +
+      `t = ${time} s, ${f.stats.particles} particles`;
     status.dataset.frame = f.frame;
     drawPlots(plots, index);
   }
@@ -188,11 +217,18 @@ function start() {
       return;
     }
     play.textContent = "pause";
-    const frameRate = run.frames.length > 1 ? (run.frames.length - 1) / (run.frames[run.frames.length - 1].stats.time - run.frames[0].stats.time) : 30;
-    playing = setInterval(() => {
-      slider.value = (current() + 1) % run.frames.length;
-      show(current());
-    }, 1000 / Math.min(frameRate, 60));
+    const frameRate =
+      run.frames.length > 1
+        ? (run.frames.length - 1) /
+          (run.frames[run.frames.length - 1].stats.time - run.frames[0].stats.time)
+        : 30;
+    playing = setInterval(
+      () => {
+        slider.value = (current() + 1) % run.frames.length;
+        show(current());
+      },
+      1000 / Math.min(frameRate, 60),
+    );
   };
 
   function resize() {
@@ -209,7 +245,10 @@ function start() {
   const options = new URLSearchParams(window.location.hash.slice(1));
   if (options.get("colouring")) colouring.value = options.get("colouring");
   const asked = options.get("frame");
-  const index = asked === "last" ? run.frames.length - 1 : run.frames.findIndex((f) => String(f.frame) === asked);
+  const index =
+    asked === "last"
+      ? run.frames.length - 1
+      : run.frames.findIndex((f) => String(f.frame) === asked);
   slider.value = Math.max(index, 0);
   show(current());
   renderer.setAnimationLoop(() => renderer.render(scene, camera));
