@@ -39,7 +39,7 @@ struct OutputOptions {
   /// the same, so on by default without refinement or tearing
   bool point_cache = false;
   /// frames.h5, every frame's positions, velocities, rest positions, triangles and pins
-  /// (lib/frame_arrays.hpp); off by default (about 80 bytes per particle and frame)
+  /// (lib/frame_arrays.hpp); off by default (about 110 bytes per particle and frame)
   bool arrays = false;
 };
 
