@@ -10,7 +10,8 @@ fail() { echo "FAIL: $*"; exit 1; }
 chromium_in() {  # chromium_in PROFILE_NAME ARGS...: headless, software WebGL, its own profile
   local profile=$out/profile_$1
   shift
-  timeout 120 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader \
+  timeout 120 chromium --headless --no-sandbox --disable-dev-shm-usage --disable-gpu \
+    --use-angle=swiftshader \
     --enable-unsafe-swiftshader --user-data-dir="$profile" --window-size=1100,700 \
     --virtual-time-budget=5000 "$@" 2>/dev/null
 }
