@@ -69,19 +69,24 @@ FrameArraysFile::FrameArraysFile(const std::filesystem::path& file, double frame
   errno = 0;
   m_file_id = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (m_file_id < 0) throw FileWriteError(file, "arrays", refusal("to create the file"));
-  auto attribute = [&](const char* name, hid_t type, const void* value) {
-    write_attribute(m_file_id, name, type, value, m_file);
-  };
-  const Handle text(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(text.get(), H5T_VARIABLE);
-  H5Tset_cset(text.get(), H5T_CSET_UTF8);
-  const char* format = "tissu frames 1";
-  attribute("format", text.get(), &format);
-  attribute("frame_rate_hz", H5T_NATIVE_DOUBLE, &frame_rate_hz);
-  const std::int8_t fixed = fixed_particles ? 1 : 0;
-  attribute("fixed_particles", H5T_NATIVE_INT8, &fixed);
-  m_frames_id = H5Gcreate2(m_file_id, "frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (m_frames_id < 0) throw FileWriteError(m_file, "arrays", refusal("the frames group"));
+  try {
+    auto attribute = [&](const char* name, hid_t type, const void* value) {
+      write_attribute(m_file_id, name, type, value, m_file);
+    };
+    const Handle text(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(text.get(), H5T_VARIABLE);
+    H5Tset_cset(text.get(), H5T_CSET_UTF8);
+    const char* format = "tissu frames 1";
+    attribute("format", text.get(), &format);
+    attribute("frame_rate_hz", H5T_NATIVE_DOUBLE, &frame_rate_hz);
+    const std::int8_t fixed = fixed_particles ? 1 : 0;
+    attribute("fixed_particles", H5T_NATIVE_INT8, &fixed);
+    m_frames_id = H5Gcreate2(m_file_id, "frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (m_frames_id < 0) throw FileWriteError(m_file, "arrays", refusal("the frames group"));
+  } catch (...) {  // no destructor runs for a half-made object: close the file here
+    H5Fclose(m_file_id);
+    throw;
+  }
 }
 
 FrameArraysFile::~FrameArraysFile() {
