@@ -14,6 +14,7 @@ packages=(
   python3-h5py python3-numpy python3-matplotlib # the Python example that reads them (examples/)
   chromium # the viewer's test in a real browser (tests/apps/viewer_in_chromium.sh)
   blender # the point cache and glTF frames played in Blender (tests/apps/caches_in_blender.sh)
+  libbullet-dev # the peer in bench/bullet_sheet_bench.cpp (issue 16)
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang libclang-rt-14-dev)
