@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(
   cmake ninja-build g++ pkg-config
-  libcgal-dev libeigen3-dev libassimp-dev nlohmann-json3-dev libcli11-dev
+  libcgal-dev libeigen3-dev libmetis-dev libassimp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libstb-dev ffmpeg
   gnuplot-nox # plots in docs/ (scripts/plot_pd_accuracy.sh)

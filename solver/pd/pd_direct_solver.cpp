@@ -1,10 +1,21 @@
 #include "solver/pd/pd_direct_solver.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <vector>
 
 #include "solver/parallel.hpp"
 
 namespace tissu {
+namespace {
+
+/// Threads for the two halves of a sweep: two, unless the user allows fewer (OMP_NUM_THREADS).
+int half_threads() {
+  return std::min(2, omp_get_max_threads());
+}
+
+}  // namespace
 
 bool PdDirectSolver::factorize(const PdSystem& system) {
   if (m_ldlt && m_generation == system.generation) return true;
@@ -21,7 +32,7 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
   }
   Matrix matrix(free_count, free_count);
   matrix.setFromTriplets(entries.begin(), entries.end());
-  if (!m_ldlt) m_ldlt = std::make_unique<Eigen::SimplicialLDLT<Matrix>>();
+  if (!m_ldlt) m_ldlt = std::make_unique<Factorization>();
   m_ldlt->compute(matrix);
   ++m_factorizations;
   if (m_ldlt->info() != Eigen::Success) {
@@ -31,6 +42,11 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
   m_generation = system.generation;
   m_inverse_d = m_ldlt->vectorD().cwiseInverse();  // vectorD() returns a copy: keep it
   m_solution.resize(3, free_count);
+  const Matrix& lower = m_ldlt->matrixL().nestedExpression();
+  m_partition = partition_factor(free_count, lower.outerIndexPtr(), lower.innerIndexPtr());
+  for (Eigen::Matrix3Xd& updates : m_separator_updates) {
+    updates.resize(3, free_count - m_partition.separator_start);
+  }
   return true;
 }
 
@@ -55,19 +71,54 @@ bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eig
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
   const double* values = lower.valuePtr();
-  for (int column = 0; column < free_count; ++column) {  // L y = z
+  const FactorPartition& partition = m_partition;
+  const int separator_start = partition.separator_start;
+  const bool two_threads = free_count >= min_parallel_items;
+  const int threads = half_threads();
+
+  // L y = z: each half scatters into its own rows and into its own copy of the separator rows
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
+  for (int half = 0; half < 2; ++half) {
+    Eigen::Matrix3Xd& updates = m_separator_updates[half];
+    updates.setZero();
+    for (const int column : partition.half_columns[half]) {
+      const Eigen::Vector3d y = m_solution.col(column);
+      const int separator_entry = partition.separator_entry[column];
+      for (int k = partition.first_below_diagonal[column]; k < separator_entry; ++k) {
+        m_solution.col(inner[k]) -= values[k] * y;
+      }
+      for (int k = separator_entry; k < outer[column + 1]; ++k) {
+        updates.col(inner[k] - separator_start) -= values[k] * y;
+      }
+    }
+  }
+  for (int column = separator_start; column < free_count; ++column) {
+    m_solution.col(column) += m_separator_updates[0].col(column - separator_start) +
+                              m_separator_updates[1].col(column - separator_start);
     const Eigen::Vector3d y = m_solution.col(column);
-    for (int k = outer[column]; k < outer[column + 1]; ++k) {
-      if (inner[k] > column) m_solution.col(inner[k]) -= values[k] * y;
+    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
+      m_solution.col(inner[k]) -= values[k] * y;
     }
   }
   m_solution.array().rowwise() *= m_inverse_d.transpose().array();  // D^-1
-  for (int column = free_count - 1; column >= 0; --column) {        // L^T x = y
+
+  // L^T x = y: the separator, then the halves, each reading its own rows and the separator's
+  const auto solve_column_backward = [&](int column) {
     Eigen::Vector3d x = m_solution.col(column);
-    for (int k = outer[column]; k < outer[column + 1]; ++k) {
-      if (inner[k] > column) x -= values[k] * m_solution.col(inner[k]);
+    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
+      x -= values[k] * m_solution.col(inner[k]);
     }
     m_solution.col(column) = x;
+  };
+  for (int column = free_count - 1; column >= separator_start; --column) {
+    solve_column_backward(column);
+  }
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
+  for (int half = 0; half < 2; ++half) {
+    const std::vector<int>& columns = partition.half_columns[half];
+    for (auto column = columns.rbegin(); column != columns.rend(); ++column) {
+      solve_column_backward(*column);
+    }
   }
 #pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int row = 0; row < free_count; ++row) {

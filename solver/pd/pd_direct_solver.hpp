@@ -8,15 +8,21 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <array>
 #include <cstdint>
 #include <memory>
 
+#include "solver/pd/factor_partition.hpp"
+#include "solver/pd/nested_dissection_ordering.hpp"
 #include "solver/pd/pd_system.hpp"
 
 namespace tissu {
 
-/// Sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) of the free-particle matrix
-/// A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
+/// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of the free-particle
+/// matrix A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
+/// Its triangular solves sweep the two halves of the factor below the top separator
+/// (factor_partition.hpp) on two OpenMP threads when there are two, always in the same order of
+/// operations: the same bits for any number of threads.
 /// Refactorised when the system's generation changes (update_pd_system() rebuilt it for a new
 /// model or time step). Copying gives an unfactorised solver (Eigen's
 /// factorisations are not copyable); it factorises again on first use.
@@ -47,11 +53,15 @@ class PdDirectSolver {
 
  private:
   using Matrix = Eigen::SparseMatrix<double>;
-  std::unique_ptr<Eigen::SimplicialLDLT<Matrix>> m_ldlt;
+  using Factorization = Eigen::SimplicialLDLT<Matrix, Eigen::Lower, NestedDissectionOrdering>;
+  std::unique_ptr<Factorization> m_ldlt;
+  FactorPartition m_partition;     ///< the factor's halves and separator
   std::uint64_t m_generation = 0;  ///< system generation of the factorisation, 0 = none
   int m_factorizations = 0;
   Eigen::VectorXd m_inverse_d;  ///< #F 1 / D of the LDL^T factorisation (s^2/kg)
   Eigen::Matrix3Xd m_solution;  ///< 3 x #F right-hand side, then solution, in permuted order (m)
+  /// 3 x #separator per half: what each half's forward sweep subtracts from the separator rows
+  std::array<Eigen::Matrix3Xd, 2> m_separator_updates;
 };
 
 }  // namespace tissu

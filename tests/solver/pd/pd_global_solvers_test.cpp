@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 
 #include "solver/pd/pd_direct_solver.hpp"
@@ -163,6 +164,41 @@ TEST(PdGlobalSolvers, IdenticalForOneAndTwoThreads) {
     }
     EXPECT_TRUE((results[0].array() == results[1].array()).all()) << to_string(solver);
     EXPECT_NE(results[0], problem.start) << to_string(solver);
+  }
+}
+
+// the direct solve's residual: a_i p_i - sum_j s_ij p_j - c_i over the free particles (N)
+double direct_residual_n(const LinearProblem& problem, const Eigen::VectorXd& p) {
+  const PdSystem& system = problem.system;
+  double largest_n = 0.0;
+  for (const int i : system.free_particles) {
+    Eigen::Vector3d residual =
+        system.diagonal[i] * p.segment<3>(3 * i) - problem.rhs.segment<3>(3 * i);
+    for (int e = system.neighbour_offsets[i]; e < system.neighbour_offsets[i + 1]; ++e) {
+      residual -= system.weights[e] * p.segment<3>(3 * system.neighbours[e]);
+    }
+    largest_n = std::max(largest_n, residual.lpNorm<Eigen::Infinity>());
+  }
+  return largest_n;
+}
+
+// the factor's two halves are swept on two threads when there are two: the same bits as one
+TEST(PdDirectSolver, SolvesExactlyWithTheSameBitsOnOneAndTwoThreads) {
+  State state;
+  const LinearProblem problem =
+      make_problem(test::grid_model(30, 30, 0.02, 0.001, 3000.0, 0.0, state), state, 1.0 / 30.0, 3);
+  std::array<Eigen::VectorXd, 2> results;
+  for (int threads = 1; threads <= 2; ++threads) {
+    const test::ScopedThreadCount count(threads);
+    results[threads - 1] = direct_solution(problem);
+  }
+  EXPECT_TRUE((results[0].array() == results[1].array()).all());
+  const double scale_n = problem.rhs.lpNorm<Eigen::Infinity>();
+  EXPECT_LT(direct_residual_n(problem, results[0]), 1e-9 * scale_n);
+  for (int i = 0; i < problem.model.particle_count(); ++i) {  // pinned ones untouched
+    if (problem.model.pinned[i]) {
+      EXPECT_EQ(results[0].segment<3>(3 * i), problem.start.segment<3>(3 * i));
+    }
   }
 }
 
