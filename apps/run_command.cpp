@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/scenario/scenario_limits.hpp"
 #include "lib/simulation.hpp"
+#include "lib/thread_count.hpp"
 #include "topology/indexed_mesh.hpp"
 #include "topology/pin_selection.hpp"
 
@@ -69,11 +71,19 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   options.frames = command.frames;
   options.stop = stop;
   ProgressReporter progress = stderr_progress();
+  // threads from the cloth's size at every frame (it changes with refinement and tearing), unless
+  // the scenario or OMP_NUM_THREADS chose them (lib/thread_count.hpp)
+  const bool threads_chosen = scenario.threads > 0 || std::getenv("OMP_NUM_THREADS") != nullptr;
+  const int available_threads = omp_get_max_threads();
+  options.on_frame = [&, threads_chosen, available_threads](const FrameStats& row) {
+    if (!threads_chosen)
+      omp_set_num_threads(threads_for_particles(row.particles, available_threads));
+    if (!command.quiet) progress(row);
+  };
   if (!command.quiet) {
     options.on_setup = [](const std::string& stage) {
       std::fprintf(stderr, "tissu: %s\n", stage.c_str());
     };
-    options.on_frame = [&progress](const FrameStats& row) { progress(row); };
     options.on_image = [&progress](int done, int total) { progress.rendered(done, total); };
   }
   std::string unconverged_warning;  // printed after the run, so as not to break the progress bar
@@ -99,8 +109,7 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
     std::fprintf(stderr, "tissu: %d frames (%d images) written to %s\n", result.frames_done,
                  result.images, output_dir.c_str());
     if (scenario.output.viewer) {
-      std::fprintf(stderr, "tissu: to play them in a browser: tissu view %s\n",
-                   output_dir.c_str());
+      std::fprintf(stderr, "tissu: to play them in a browser: tissu view %s\n", output_dir.c_str());
     }
   }
   return {0, "completed", ""};
