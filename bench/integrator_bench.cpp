@@ -7,7 +7,12 @@
 // iterations per step (Newton or L-BFGS iterations, PD local/global iterations, CG iterations of
 // implicit_euler), unconverged steps, lowest point after the last frame (m, the pins at 0) and
 // the structural springs' stretch (%): median, 90th percentile and largest (at the two pinned
-// corners, which carry the whole weight: it grows with the resolution).
+// corners, which carry the whole weight: it grows with the resolution); and the gap to the
+// converged trajectory (Newton to a tight tolerance, run once per size), mean and largest
+// particle distance over the 90 frames in % of the sheet's side: gap_* at the same h (how far
+// the method is from the backward-Euler trajectory it claims to follow) and gap_h16_* at h/16
+// (how far from the motion itself; N <= 81). A method with a small tolerance but a large gap
+// stops its iterations before it has converged.
 //
 // Demo/<scenario>/<config>: a shipped scenario with implicit_euler and 10 steps per frame (the
 // demos' integrator before issue 16) and with the others, at 10 or 1 steps per frame (xN): wall
@@ -22,6 +27,8 @@
 #include <chrono>
 #include <map>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bench/recorded_run.hpp"
@@ -40,6 +47,7 @@ constexpr double sheet_stiffness_n_per_m = 3000.0;
 struct Method {
   Integrator integrator;
   PdGlobalSolver global_solver = PdGlobalSolver::direct;
+  double tolerance = 0.0;  ///< Newton's or quasi-Newton's tolerance; 0: the default
 };
 
 CompiledCloth hanging_sheet(int particles_per_side) {
@@ -75,56 +83,128 @@ int iterations_of(const SolverParams& params, const StepWorkspace& workspace) {
   }
 }
 
-void BM_HangingSheet(benchmark::State& bench, Method method) {
-  const int n = static_cast<int>(bench.range(0));
+SolverParams sheet_params(const Method& method, int steps_per_frame) {
   SolverParams params;
-  params.time_step = 1.0 / 30.0;
+  params.time_step = 1.0 / (30.0 * steps_per_frame);
   params.integrator = method.integrator;
   params.pd.global_solver = method.global_solver;
-  CompiledCloth cloth = hanging_sheet(n);
-  const SpringModel& model = cloth.model;
-  int unconverged = 0;
-  long iterations = 0;
-  double wall_s = 0.0;
-  for (auto _ : bench) {
-    State state = cloth.state;
-    StepWorkspace workspace;
-    unconverged = 0;
-    iterations = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (int frame = 0; frame < sheet_frames; ++frame) {
-      const StepStatus status = step(model, params, state, workspace);
-      if (status == StepStatus::non_finite) {
-        bench.SkipWithError("non-finite state");
-        return;
-      }
-      unconverged += status == StepStatus::not_converged;
-      iterations += iterations_of(params, workspace);
-    }
-    wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    bench.SetIterationTime(wall_s);
-    double lowest_m = 0.0;
-    for (int p = 0; p < model.particle_count(); ++p) {
-      lowest_m = std::min(lowest_m, state.x[3 * p + 2]);
-    }
-    std::vector<double> stretches;  // of the structural springs
-    for (int s = 0; s < model.spring_count(); ++s) {
-      if (model.kind[s] != SpringKind::structural) continue;
-      const double length_m = (state.x.segment<3>(3 * model.springs(s, 0)) -
-                               state.x.segment<3>(3 * model.springs(s, 1)))
-                                  .norm();
-      stretches.push_back(length_m / model.rest_length[s] - 1.0);
-    }
-    std::sort(stretches.begin(), stretches.end());
-    bench.counters["lowest_m"] = lowest_m;
-    bench.counters["median_stretch_pct"] = 100.0 * stretches[stretches.size() / 2];
-    bench.counters["p90_stretch_pct"] = 100.0 * stretches[stretches.size() * 9 / 10];
-    bench.counters["max_stretch_pct"] = 100.0 * stretches.back();
+  if (method.tolerance > 0.0) {
+    params.newton.tolerance = params.quasi_newton.tolerance = method.tolerance;
   }
-  bench.counters["ms_per_frame"] = 1e3 * wall_s / sheet_frames;
-  bench.counters["iterations_per_step"] = static_cast<double>(iterations) / sheet_frames;
-  bench.counters["unconverged"] = unconverged;
+  return params;
+}
+
+/// One run of the sheet: every frame's positions (3#P, m) when `record`, and what it took.
+struct SheetRun {
+  std::vector<Eigen::VectorXd> frames;
+  State last;
+  double wall_s = 0.0;
+  long iterations = 0;
+  int unconverged = 0;
+  bool finite = true;
+};
+
+SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int steps_per_frame,
+                   bool record) {
+  SheetRun run;
+  run.last = cloth.state;
+  StepWorkspace workspace;
+  const auto start = std::chrono::steady_clock::now();
+  for (int frame = 0; frame < sheet_frames && run.finite; ++frame) {
+    for (int k = 0; k < steps_per_frame && run.finite; ++k) {
+      const StepStatus status = step(cloth.model, params, run.last, workspace);
+      run.finite = status != StepStatus::non_finite;
+      run.unconverged += status == StepStatus::not_converged;
+      run.iterations += iterations_of(params, workspace);
+    }
+    if (record) run.frames.push_back(run.last.x);
+  }
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+/// The converged trajectory the others are measured against: Newton to 1e-5 (1e-4 at 128 x 128,
+/// where 1e-5 takes an hour) with `steps_per_frame` steps of h = 1/(30 steps_per_frame) s; run
+/// once per size and kept. Sizes above 128 x 128 have none (a reference there takes hours).
+const std::vector<Eigen::VectorXd>* reference_trajectory(int n, int steps_per_frame) {
+  if (n > 128 || (steps_per_frame > 1 && n > 81)) return nullptr;
+  static std::map<std::pair<int, int>, std::vector<Eigen::VectorXd>> references;
+  auto found = references.find({n, steps_per_frame});
+  if (found == references.end()) {
+    SolverParams params = sheet_params(
+        {Integrator::newton, PdGlobalSolver::direct, n > 81 ? 1e-4 : 1e-5}, steps_per_frame);
+    params.newton.max_iterations = 100;
+    params.newton.cg_max_iterations = 1000;
+    found = references
+                .emplace(std::make_pair(n, steps_per_frame),
+                         run_sheet(hanging_sheet(n), params, steps_per_frame, true).frames)
+                .first;
+  }
+  return &found->second;
+}
+
+/// Mean over the frames of the particles' mean distance to the reference, and the largest
+/// distance seen, in % of the sheet's side (1 m).
+std::pair<double, double> trajectory_gap_pct(const std::vector<Eigen::VectorXd>& frames,
+                                             const std::vector<Eigen::VectorXd>& reference) {
+  double mean_m = 0.0, max_m = 0.0;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const Eigen::Index particles = frames[f].size() / 3;
+    double frame_m = 0.0;
+    for (Eigen::Index p = 0; p < particles; ++p) {
+      const double d_m = (frames[f].segment<3>(3 * p) - reference[f].segment<3>(3 * p)).norm();
+      frame_m += d_m / particles;
+      max_m = std::max(max_m, d_m);
+    }
+    mean_m += frame_m / frames.size();
+  }
+  return {100.0 * mean_m, 100.0 * max_m};
+}
+
+void BM_HangingSheet(benchmark::State& bench, Method method) {
+  const int n = static_cast<int>(bench.range(0));
+  const SolverParams params = sheet_params(method, 1);
+  const CompiledCloth cloth = hanging_sheet(n);
+  const SpringModel& model = cloth.model;
+  const std::vector<Eigen::VectorXd>* reference = reference_trajectory(n, 1);
+  const std::vector<Eigen::VectorXd>* fine_reference = reference_trajectory(n, 16);
+  SheetRun run;
+  for (auto _ : bench) {
+    run = run_sheet(cloth, params, 1, reference != nullptr);
+    if (!run.finite) {
+      bench.SkipWithError("non-finite state");
+      return;
+    }
+    bench.SetIterationTime(run.wall_s);
+  }
+  const State& state = run.last;
+  double lowest_m = 0.0;
+  for (int p = 0; p < model.particle_count(); ++p)
+    lowest_m = std::min(lowest_m, state.x[3 * p + 2]);
+  std::vector<double> stretches;  // of the structural springs
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (model.kind[s] != SpringKind::structural) continue;
+    const double length_m =
+        (state.x.segment<3>(3 * model.springs(s, 0)) - state.x.segment<3>(3 * model.springs(s, 1)))
+            .norm();
+    stretches.push_back(length_m / model.rest_length[s] - 1.0);
+  }
+  std::sort(stretches.begin(), stretches.end());
+  bench.counters["lowest_m"] = lowest_m;
+  bench.counters["median_stretch_pct"] = 100.0 * stretches[stretches.size() / 2];
+  bench.counters["p90_stretch_pct"] = 100.0 * stretches[stretches.size() * 9 / 10];
+  bench.counters["max_stretch_pct"] = 100.0 * stretches.back();
+  bench.counters["ms_per_frame"] = 1e3 * run.wall_s / sheet_frames;
+  bench.counters["iterations_per_step"] = static_cast<double>(run.iterations) / sheet_frames;
+  bench.counters["unconverged"] = run.unconverged;
   bench.counters["particles"] = model.particle_count();
+  // gaps to the converged trajectory at h and at h/16 (-1: no reference at this size)
+  const auto gap = [&](const std::vector<Eigen::VectorXd>* to) {
+    return to != nullptr ? trajectory_gap_pct(run.frames, *to) : std::make_pair(-1.0, -1.0);
+  };
+  std::tie(bench.counters["gap_mean_pct"], bench.counters["gap_max_pct"]) = gap(reference);
+  std::tie(bench.counters["gap_h16_mean_pct"], bench.counters["gap_h16_max_pct"]) =
+      gap(fine_reference);
 }
 
 void sheet_sizes(benchmark::internal::Benchmark* b) {
@@ -146,7 +226,13 @@ BENCHMARK_CAPTURE(BM_HangingSheet, pd_colored_gauss_seidel,
                   Method{Integrator::projective_dynamics, PdGlobalSolver::colored_gauss_seidel})
     ->Apply(sheet_sizes);
 BENCHMARK_CAPTURE(BM_HangingSheet, newton, Method{Integrator::newton})->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, newton_3e - 3,
+                  Method{Integrator::newton, PdGlobalSolver::direct, 3e-3})
+    ->Apply(sheet_sizes);
 BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton, Method{Integrator::quasi_newton})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton_1e - 3,
+                  Method{Integrator::quasi_newton, PdGlobalSolver::direct, 1e-3})
     ->Apply(sheet_sizes);
 
 /// The demos' settings before issue 16, which the others are compared against.
