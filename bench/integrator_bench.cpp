@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <tuple>
@@ -125,9 +126,14 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
 
 /// The converged trajectory the others are measured against: Newton to 1e-5 (1e-4 at 128 x 128,
 /// where 1e-5 takes an hour) with `steps_per_frame` steps of h = 1/(30 steps_per_frame) s; run
-/// once per size and kept. Sizes above 128 x 128 have none (a reference there takes hours).
+/// once per size and kept. Sizes above 128 x 128 have none (a reference there takes hours), and
+/// none is run with TISSU_SHEET_REFERENCES=0 in the environment (timings only: a reference takes
+/// minutes, and the gaps are the same on any thread count).
 const std::vector<Eigen::VectorXd>* reference_trajectory(int n, int steps_per_frame) {
-  if (n > 128 || (steps_per_frame > 1 && n > 81)) return nullptr;
+  const char* wanted = std::getenv("TISSU_SHEET_REFERENCES");
+  if (n > 128 || (steps_per_frame > 1 && n > 81) || (wanted && std::string(wanted) == "0")) {
+    return nullptr;
+  }
   static std::map<std::pair<int, int>, std::vector<Eigen::VectorXd>> references;
   auto found = references.find({n, steps_per_frame});
   if (found == references.end()) {

@@ -49,7 +49,8 @@ struct ImplicitOptions {
 
 /// How the global step of Projective Dynamics solves (M/h^2 + L) p = M/h^2 y + J d.
 enum class PdGlobalSolver {
-  direct,                ///< sparse LDL^T (Eigen SimplicialLDLT), factorised once per model and h
+  direct,                ///< sparse LDL^T (Eigen SimplicialLDLT, METIS nested dissection),
+                         ///< factorised once per model and h, solved on two threads
   jacobi,                ///< Jacobi sweeps, all particles from the previous iterate (parallel)
   chebyshev,             ///< Jacobi with Chebyshev semi-iterative acceleration (Wang 2015)
   gauss_seidel,          ///< sequential Gauss-Seidel in particle order (course's global step)
@@ -102,7 +103,10 @@ struct ProjectiveDynamicsOptions {
 /// Minimisation of backward Euler's incremental potential by the quasi-Newton integrator.
 struct QuasiNewtonOptions {
   /// the step stops once its last quasi-Newton correction is at most tolerance times the step's
-  /// displacement (as NewtonOptions::tolerance), in (0, 1], dimensionless
+  /// displacement (as NewtonOptions::tolerance), in (0, 1], dimensionless. On stiff cloth this
+  /// bounds the last correction, not the error: L-BFGS crawls along the cloth's soft modes, and at
+  /// 1e-2 the stiff hanging sheet's motion is 17 to 21 cm (mean) off the converged one, at 1e-3
+  /// within 1 cm, 4 to 5 times slower (docs/benchmarks.md, "Converged steps at frame rate")
   double tolerance = 1e-2;
   int max_iterations = 200;  ///< a step that has not met the tolerance by then is not_converged
   int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
