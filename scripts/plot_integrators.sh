@@ -2,7 +2,7 @@
 # Runs bench/integrator_bench's hanging sheets (one thread) and plots each method's wall time per
 # frame against the particle count, log-log, into docs/integrators.png; the benchmark's CSV is
 # kept next to it as docs/integrators.csv, and `--plot-only` replots that CSV. Needs a Release
-# build (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). About 50 minutes, most of
+# build (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). About 30 minutes, much of
 # it the converged reference trajectories (TISSU_SHEET_REFERENCES=0 skips them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,7 +40,7 @@ set xlabel "particles"
 set ylabel "ms per frame"
 set grid
 set key top left noenhanced
-methods = "implicit_euler pd_direct pd_colored_gauss_seidel newton newton_3e-3 quasi_newton quasi_newton_1e-3"
+methods = "implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton"
 plot for [m in methods] "$points" using (strcol(1) eq m ? \$2 : 1/0):3 with linespoints \
        pointsize 1 title m, \
      x * 19.0 / 6561 with lines dashtype 2 linecolor "black" title "linear in the particle count"

@@ -105,7 +105,7 @@ struct QuasiNewtonOptions {
   /// the step stops once its last quasi-Newton correction is at most tolerance times the step's
   /// displacement (as NewtonOptions::tolerance), in (0, 1], dimensionless. On stiff cloth this
   /// bounds the last correction, not the error: L-BFGS crawls along the cloth's soft modes, and at
-  /// 1e-2 the stiff hanging sheet's motion is 17 to 21 cm (mean) off the converged one, at 1e-3
+  /// 1e-2 the stiff hanging sheet's motion is 7 to 15 cm (mean) off the converged one, at 1e-3
   /// within 1 cm, 4 to 5 times slower (docs/benchmarks.md, "Converged steps at frame rate")
   double tolerance = 1e-2;
   int max_iterations = 200;  ///< a step that has not met the tolerance by then is not_converged

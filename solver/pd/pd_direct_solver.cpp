@@ -17,8 +17,7 @@ int half_threads() {
 
 }  // namespace
 
-bool PdDirectSolver::factorize(const PdSystem& system) {
-  if (m_ldlt && m_generation == system.generation) return true;
+Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system) {
   const int free_count = static_cast<int>(system.free_particles.size());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(system.neighbours.size() + system.free_particles.size());
@@ -30,8 +29,15 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
       if (column >= 0) entries.emplace_back(row, column, -system.weights[e]);
     }
   }
-  Matrix matrix(free_count, free_count);
+  Eigen::SparseMatrix<double> matrix(free_count, free_count);
   matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
+}
+
+bool PdDirectSolver::factorize(const PdSystem& system) {
+  if (m_ldlt && m_generation == system.generation) return true;
+  const int free_count = static_cast<int>(system.free_particles.size());
+  const Matrix matrix = pd_free_particle_matrix(system);
   if (!m_ldlt) m_ldlt = std::make_unique<Factorization>();
   m_ldlt->compute(matrix);
   ++m_factorizations;

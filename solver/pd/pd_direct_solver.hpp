@@ -18,6 +18,11 @@
 
 namespace tissu {
 
+/// The free-particle matrix A_ff (#F x #F, kg/s^2) of the global step, rows and columns in
+/// system.free_particles order: A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and
+/// j; pinned neighbours go to the right-hand side.
+Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system);
+
 /// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of the free-particle
 /// matrix A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
 /// Its triangular solves sweep the two halves of the factor below the top separator

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "solver/pd/nested_dissection_ordering.hpp"
+#include "solver/pd/pd_direct_solver.hpp"
 #include "solver/pd/pd_system.hpp"
 #include "tests/solver/test_models.hpp"
 
@@ -17,23 +18,6 @@ namespace {
 
 using Matrix = Eigen::SparseMatrix<double>;
 using Factorization = Eigen::SimplicialLDLT<Matrix, Eigen::Lower, NestedDissectionOrdering>;
-
-// A_ff of a model's PD system, as PdDirectSolver assembles it
-Matrix pd_matrix(const PdSystem& system) {
-  std::vector<Eigen::Triplet<double>> entries;
-  const int free_count = static_cast<int>(system.free_particles.size());
-  for (int row = 0; row < free_count; ++row) {
-    const int i = system.free_particles[row];
-    entries.emplace_back(row, row, system.diagonal[i]);
-    for (int e = system.neighbour_offsets[i]; e < system.neighbour_offsets[i + 1]; ++e) {
-      const int column = system.free_index[system.neighbours[e]];
-      if (column >= 0) entries.emplace_back(row, column, -system.weights[e]);
-    }
-  }
-  Matrix matrix(free_count, free_count);
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  return matrix;
-}
 
 // checks the partition's promises against the factor L; returns each half's entries
 std::array<long, 2> expect_valid_partition(const Matrix& lower, const FactorPartition& partition) {
@@ -78,7 +62,7 @@ TEST(FactorPartition, SplitsANestedDissectionGridFactorIntoTwoBalancedIndependen
   finalize_model(model);
   PdSystem system;
   update_pd_system(model, 1.0 / 30.0, system);
-  Factorization ldlt(pd_matrix(system));
+  Factorization ldlt(pd_free_particle_matrix(system));
   ASSERT_EQ(ldlt.info(), Eigen::Success);
   const Matrix& lower = ldlt.matrixL().nestedExpression();
   const FactorPartition partition = partition_factor(static_cast<int>(lower.cols()),
