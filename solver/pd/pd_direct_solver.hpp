@@ -23,9 +23,8 @@ namespace tissu {
 /// j; pinned neighbours go to the right-hand side.
 Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system);
 
-/// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of the free-particle
-/// matrix A_ff (#F x #F): A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and j.
-/// Its triangular solves sweep the two halves of the factor below the top separator
+/// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of
+/// pd_free_particle_matrix(). Its triangular solves sweep the two halves of the factor below the top separator
 /// (factor_partition.hpp) on two OpenMP threads when there are two, always in the same order of
 /// operations: the same bits for any number of threads.
 /// Refactorised when the system's generation changes (update_pd_system() rebuilt it for a new
