@@ -24,12 +24,12 @@ namespace tissu {
 Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system);
 
 /// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of
-/// pd_free_particle_matrix(). Its triangular solves sweep the two halves of the factor below the top separator
-/// (factor_partition.hpp) on two OpenMP threads when there are two, always in the same order of
-/// operations: the same bits for any number of threads.
-/// Refactorised when the system's generation changes (update_pd_system() rebuilt it for a new
-/// model or time step). Copying gives an unfactorised solver (Eigen's
-/// factorisations are not copyable); it factorises again on first use.
+/// pd_free_particle_matrix(). Its triangular solves sweep the two halves of the factor below the
+/// top separator (factor_partition.hpp) on two OpenMP threads when there are two, always in the
+/// same order of operations: the same bits for any number of threads. Refactorised when the
+/// system's generation changes (update_pd_system() rebuilt it for a new model or time step).
+/// Copying gives an unfactorised solver (Eigen's factorisations are not copyable); it factorises
+/// again on first use.
 class PdDirectSolver {
  public:
   PdDirectSolver() = default;
