@@ -71,13 +71,13 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   options.frames = command.frames;
   options.stop = stop;
   ProgressReporter progress = stderr_progress();
-  // threads from the cloth's size at every frame (it changes with refinement and tearing), unless
-  // the scenario or OMP_NUM_THREADS chose them (lib/thread_count.hpp)
+  // threads from the cloth's size (it changes with refinement and tearing) and the cores other
+  // processes leave idle, at every frame, unless the scenario or OMP_NUM_THREADS chose them
+  // (lib/thread_count.hpp)
   const bool threads_chosen = scenario.threads > 0 || std::getenv("OMP_NUM_THREADS") != nullptr;
-  const int available_threads = omp_get_max_threads();
-  options.on_frame = [&, threads_chosen, available_threads](const FrameStats& row) {
-    if (!threads_chosen)
-      omp_set_num_threads(threads_for_particles(row.particles, available_threads));
+  FrameThreadChooser thread_chooser(omp_get_max_threads());
+  options.on_frame = [&, threads_chosen](const FrameStats& row) {
+    if (!threads_chosen) omp_set_num_threads(thread_chooser.threads(row.particles));
     if (!command.quiet) progress(row);
   };
   if (!command.quiet) {

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// How many OpenMP threads a cloth of a given size is worth, for programs whose user chose none.
+/// How many OpenMP threads a cloth is worth, for programs whose user chose none: no more than its
+/// size pays for, and no more than the cores other processes leave idle.
 
 #include <algorithm>
+#include <optional>
 
 namespace tissu {
 
@@ -18,5 +20,46 @@ inline constexpr int min_particles_per_thread = 1250;
 inline int threads_for_particles(int particles, int available_threads) {
   return std::max(1, std::min(particles / min_particles_per_thread, available_threads));
 }
+
+/// CPU time counters read at one instant.
+struct CpuTimeSample {
+  double wall_s = 0;          ///< monotonic clock
+  double cores_busy_s = 0;    ///< time the cores this process may run on spent busy, all processes
+  double this_process_s = 0;  ///< CPU time of this process, all its threads
+  int cores = 0;              ///< cores in this process's affinity mask
+};
+
+/// The counters now: the busy time of the cores in this process's affinity mask from /proc/stat
+/// (user, nice, system, irq, softirq and steal: steal is time a virtual machine's host gave to
+/// others). nullopt where /proc/stat cannot be read (not Linux).
+std::optional<CpuTimeSample> sample_cpu_times();
+
+/// Cores' worth of CPU time other processes used between two samples:
+/// (Δ cores_busy_s − Δ this_process_s) / Δ wall_s, at least 0.
+double cores_used_by_others(const CpuTimeSample& earlier, const CpuTimeSample& later);
+
+/// Threads that do not share a core with the other processes' work: the cores left idle, rounded
+/// to the nearest, at least 1. A busy process beside two threads of ours on two cores is measured
+/// at about 2/3 of a core (three threads share two cores), which still leaves one thread.
+int threads_beside_others(double others_cores, int cores);
+
+/// Chooses the thread count at each frame of a run: threads_for_particles, capped by the cores
+/// other processes left idle since the last choice (measured over at least `min_window_s`, so
+/// that the 10 ms ticks of /proc/stat do not decide). An oversubscribed core makes every parallel
+/// loop wait for its slowest thread: beside one busy process on two cores, two threads ran 7 to
+/// 69 % slower than one (docs/benchmarks.md, "Threads beside a busy process").
+class FrameThreadChooser {
+ public:
+  explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25);
+
+  /// The threads for the next frame of a cloth of `particles` particles.
+  int threads(int particles);
+
+ private:
+  int m_available_threads;
+  double m_min_window_s;
+  std::optional<CpuTimeSample> m_window_start;
+  int m_idle_cores;  ///< as last measured; m_available_threads before any measurement
+};
 
 }  // namespace tissu

@@ -1,8 +1,12 @@
-// The thread count a cloth is worth grows with its particles and stays within what is available.
+// The thread count a cloth is worth grows with its particles, stays within what is available and
+// leaves alone the cores other processes are using.
 
 #include "lib/thread_count.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
 
 namespace tissu {
 namespace {
@@ -19,6 +23,55 @@ TEST(ThreadsForParticles, OneThreadPerBlockOfParticlesWithinTheAvailableThreads)
   EXPECT_EQ(threads_for_particles(1000000, 1), 1);
   EXPECT_EQ(threads_for_particles(5000, 0), 1);
   EXPECT_EQ(threads_for_particles(10 * min_particles_per_thread, 4), 4);  // always at least one
+}
+
+TEST(CoresUsedByOthers, IsTheBusyTimeNotSpentByThisProcessPerSecond) {
+  const CpuTimeSample earlier{10.0, 100.0, 3.0, 2};
+  EXPECT_DOUBLE_EQ(cores_used_by_others(earlier, {12.0, 103.0, 4.0, 2}), 1.0);
+  EXPECT_DOUBLE_EQ(cores_used_by_others(earlier, {12.0, 102.0, 5.0, 2}), 0.0);  // all ours
+  EXPECT_DOUBLE_EQ(cores_used_by_others(earlier, {12.0, 101.9, 5.0, 2}), 0.0);  // tick rounding
+  EXPECT_DOUBLE_EQ(cores_used_by_others(earlier, earlier), 0.0);                // no time passed
+}
+
+TEST(ThreadsBesideOthers, LeaveTheCoresOtherProcessesUse) {
+  EXPECT_EQ(threads_beside_others(0.0, 2), 2);
+  EXPECT_EQ(threads_beside_others(0.3, 2), 2);   // a light load: two threads still pay
+  EXPECT_EQ(threads_beside_others(0.67, 2), 1);  // one busy process sharing two cores with us
+  EXPECT_EQ(threads_beside_others(1.0, 2), 1);
+  EXPECT_EQ(threads_beside_others(1.0, 8), 7);
+  EXPECT_EQ(threads_beside_others(5.0, 2), 1);  // never none
+}
+
+/// A child process that keeps one core busy until `seconds` have passed, then exits.
+pid_t spin_in_child(double seconds) {
+  const pid_t child = fork();
+  if (child != 0) return child;
+  timespec start{}, now{};
+  clock_gettime(CLOCK_MONOTONIC, &start);
+  do {
+    clock_gettime(CLOCK_MONOTONIC, &now);
+  } while (static_cast<double>(now.tv_sec - start.tv_sec) +
+               1e-9 * static_cast<double>(now.tv_nsec - start.tv_nsec) <
+           seconds);
+  _exit(0);
+}
+
+TEST(FrameThreadChooser, LeavesACoreToABusyProcess) {
+  const std::optional<CpuTimeSample> start = sample_cpu_times();
+  ASSERT_TRUE(start.has_value()) << "/proc/stat unreadable: this test needs Linux";
+  ASSERT_GE(start->cores, 1);
+  FrameThreadChooser chooser(start->cores, 0.2);
+  const pid_t child = spin_in_child(0.8);
+  ASSERT_GT(child, 0);
+  usleep(500 * 1000);  // this process sleeps: the busy time measured is the child's (and others')
+  const std::optional<CpuTimeSample> end = sample_cpu_times();
+  const int threads = chooser.threads(1000000);
+  int child_status = 0;
+  waitpid(child, &child_status, 0);
+
+  ASSERT_TRUE(end.has_value());
+  EXPECT_GE(cores_used_by_others(*start, *end), 0.7);
+  EXPECT_LE(threads, std::max(1, start->cores - 1)) << "cores: " << start->cores;
 }
 
 }  // namespace
