@@ -17,7 +17,9 @@
 // Demo/<scenario>/<config>: a shipped scenario with implicit_euler and 10 steps per frame (the
 // demos' integrator before issue 16) and with the others, at 10 or 1 steps per frame (xN): wall
 // time per simulated second and the shape gap to today's run at the same material points, every
-// second (mean and max, % of the cloth's rest diagonal).
+// second (mean and max, % of the cloth's rest diagonal); and converged_gap_*, the same to the
+// converged backward-Euler motion at one step per frame (Newton to 1e-4; none with
+// TISSU_SHEET_REFERENCES=0).
 //
 // Results and the machine: docs/benchmarks.md.
 
@@ -124,6 +126,12 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
   return run;
 }
 
+/// Whether to run the converged references: not with TISSU_SHEET_REFERENCES=0 in the environment.
+bool references_wanted() {
+  const char* wanted = std::getenv("TISSU_SHEET_REFERENCES");
+  return !(wanted && std::string(wanted) == "0");
+}
+
 /// The converged trajectory the others are measured against: Newton to 1e-4 (at 41 x 41 within
 /// 0.05 % of the sheet's side of Newton to 1e-6) with `steps_per_frame` steps of
 /// h = 1/(30 steps_per_frame) s; run once per size and kept. Sizes above 128 x 128 (above 41 x 41
@@ -131,10 +139,7 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
 /// none is run with TISSU_SHEET_REFERENCES=0 in the environment (timings only: a reference takes
 /// minutes, and the gaps are the same on any thread count).
 const std::vector<Eigen::VectorXd>* reference_trajectory(int n, int steps_per_frame) {
-  const char* wanted = std::getenv("TISSU_SHEET_REFERENCES");
-  if (n > 128 || (steps_per_frame > 1 && n > 41) || (wanted && std::string(wanted) == "0")) {
-    return nullptr;
-  }
+  if (n > 128 || (steps_per_frame > 1 && n > 41) || !references_wanted()) return nullptr;
   static std::map<std::pair<int, int>, std::vector<Eigen::VectorXd>> references;
   auto found = references.find({n, steps_per_frame});
   if (found == references.end()) {
@@ -262,6 +267,27 @@ const bench::RecordedRun& todays_run(const std::string& scenario_file) {
   return found->second;
 }
 
+/// The converged motion at one step per frame: backward Euler solved by Newton to 1e-4.
+const std::vector<std::string> converged_settings = {
+    "simulation.integrator=\"newton\"", "simulation.substeps=1", "simulation.newton.tolerance=1e-4",
+    "simulation.newton.max_iterations=100", "simulation.newton.cg_max_iterations=1000"};
+
+std::map<std::string, bench::RecordedRun>& converged_runs() {
+  static std::map<std::string, bench::RecordedRun> runs;
+  return runs;
+}
+
+/// The converged run of each scenario, from its benchmark if it ran first, else run here once.
+const bench::RecordedRun& converged_run(const std::string& scenario_file) {
+  std::map<std::string, bench::RecordedRun>& runs = converged_runs();
+  auto found = runs.find(scenario_file);
+  if (found == runs.end()) {
+    found =
+        runs.emplace(scenario_file, bench::run_recorded(scenario_file, converged_settings)).first;
+  }
+  return found->second;
+}
+
 void BM_Demo(benchmark::State& state, const std::string& scenario_file,
              const std::vector<std::string>& overrides) {
   bench::RecordedRun run;
@@ -270,6 +296,7 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
     state.SetIterationTime(run.wall_s);
   }
   if (overrides == todays_settings) todays_runs()[scenario_file] = run;  // the others' reference
+  if (overrides == converged_settings) converged_runs()[scenario_file] = run;
   const bench::RecordedRun& today = todays_run(scenario_file);
   int unconverged = 0;
   for (const FrameStats& row : run.frames) unconverged += row.unconverged_steps;
@@ -279,6 +306,11 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
   state.counters["mean_gap_pct"] = gap.mean_pct;
   state.counters["max_gap_pct"] = gap.max_pct;
   state.counters["unconverged"] = unconverged;
+  if (references_wanted()) {
+    const bench::ShapeGap converged_gap = bench::shape_gap(run, converged_run(scenario_file));
+    state.counters["converged_gap_mean_pct"] = converged_gap.mean_pct;
+    state.counters["converged_gap_max_pct"] = converged_gap.max_pct;
+  }
 }
 
 #define TISSU_DEMO(scenario, config, ...)                                         \
@@ -290,8 +322,11 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
 
 TISSU_DEMO(curtain, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"",
            "simulation.substeps=10");
+TISSU_DEMO(curtain, newton_converged_x1, converged_settings);
 TISSU_DEMO(curtain, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
            "simulation.substeps=1");
+TISSU_DEMO(curtain, quasi_newton_tight_x1, "simulation.integrator=\"quasi_newton\"",
+           "simulation.substeps=1", "simulation.quasi_newton.tolerance=1e-3");
 TISSU_DEMO(curtain, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
 TISSU_DEMO(curtain, pd_direct_x1, "simulation.integrator=\"projective_dynamics\"",
            "simulation.substeps=1");
