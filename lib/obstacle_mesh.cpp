@@ -90,26 +90,21 @@ IndexedMesh box_mesh(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_
   return mesh;
 }
 
-}  // namespace
-
-IndexedMesh obstacle_mesh(const Obstacle& obstacle, double time_s) {
-  const Eigen::Vector3d offset = obstacle.motion.offset_m(time_s);
-  const Eigen::Vector3d position = obstacle.position + offset;
+/// The obstacle's surface at t = 0.
+IndexedMesh mesh_at_start(const Obstacle& obstacle) {
+  const Eigen::Vector3d& position = obstacle.position;
   switch (obstacle.shape) {
     case ObstacleShape::plane:
       return {};
     case ObstacleShape::sphere:
       return capsule_mesh(position, position, obstacle.radius_m, obstacle_mesh_segments);
     case ObstacleShape::capsule:
-      return capsule_mesh(position, obstacle.axis_end + offset, obstacle.radius_m,
-                          obstacle_mesh_segments);
+      return capsule_mesh(position, obstacle.axis_end, obstacle.radius_m, obstacle_mesh_segments);
     case ObstacleShape::box:
       return box_mesh(position, obstacle.half_extents_m, obstacle.rotation);
     case ObstacleShape::mesh: {
       IndexedMesh mesh;
-      for (const Eigen::Vector3d& corner : obstacle.surface->triangle_corners()) {
-        mesh.vertices.push_back(corner + offset);
-      }
+      mesh.vertices = obstacle.surface->triangle_corners();
       for (int t = 0; 3 * t < static_cast<int>(mesh.vertices.size()); ++t) {
         mesh.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
       }
@@ -119,13 +114,22 @@ IndexedMesh obstacle_mesh(const Obstacle& obstacle, double time_s) {
   return {};
 }
 
+}  // namespace
+
+IndexedMesh obstacle_mesh(const Obstacle& obstacle, double time_s) {
+  IndexedMesh mesh = mesh_at_start(obstacle);
+  const RigidPose pose = obstacle.motion.pose(time_s);
+  for (Eigen::Vector3d& vertex : mesh.vertices) vertex = pose.apply(vertex);
+  return mesh;
+}
+
 std::optional<double> ground_height_m(const std::vector<Obstacle>& obstacles, double time_s) {
   std::optional<double> height;
   for (const Obstacle& o : obstacles) {
     if (o.shape != ObstacleShape::plane) continue;
     // a floor: the normal is +z up to rounding (the reader normalises directions)
-    if (!(o.normal.normalized().z() > 1.0 - 1e-9)) continue;
-    const double z = (o.position + o.motion.offset_m(time_s)).z();
+    if (!(o.normal.normalized().z() > 1.0 - 1e-9) || o.motion.rotates()) continue;
+    const double z = o.motion.pose(time_s).apply(o.position).z();
     // the highest floor is the one the cloth can rest on
     height = height ? std::max(*height, z) : z;
   }

@@ -15,8 +15,8 @@ namespace tissu {
 /// about half a pixel of a circle: the chord sag is r (1 - cos(pi / 64)) ~ 1.2e-3 r.
 inline constexpr int obstacle_mesh_segments = 64;
 
-/// A closed triangle mesh of `obstacle`'s surface where it is at `time_s` (its position moved by
-/// motion.offset_m(time_s)), faces counter-clockwise seen from outside, every vertex on the
+/// A closed triangle mesh of `obstacle`'s surface where it is at `time_s` (its place at t = 0
+/// moved by motion.pose(time_s)), faces counter-clockwise seen from outside, every vertex on the
 /// surface:
 /// - sphere: a UV sphere of `obstacle_mesh_segments` meridians and poles at +-z;
 /// - capsule: a cylinder around the axis capped by two such hemispheres;

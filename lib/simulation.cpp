@@ -8,6 +8,7 @@
 #include "lib/cloth_setup.hpp"
 #include "lib/frame_arrays.hpp"
 #include "lib/obstacle_mesh.hpp"
+#include "lib/pin_handles.hpp"
 #include "lib/point_cache.hpp"
 #include "lib/render_frames.hpp"
 #include "lib/run_folder.hpp"
@@ -165,14 +166,15 @@ std::optional<std::string> divergence_cause(StepStatus status, const CompiledClo
 /// before a step when `stop` is requested, with steps.stopped set.
 std::optional<Divergence> step_frame(const Scenario& scenario, ClothComplex& lcc,
                                      CompiledCloth& cloth, StepWorkspace& workspace,
-                                     TearStep& tearing, SpeedLimit& limit, State& before_step,
-                                     FrameSteps& steps, StopRequest stop) {
+                                     PinHandles& handles, TearStep& tearing, SpeedLimit& limit,
+                                     State& before_step, FrameSteps& steps, StopRequest stop) {
   const auto start = std::chrono::steady_clock::now();
   for (int sub = 0; sub < scenario.substeps; ++sub) {
     if (stop.requested()) {
       steps.stopped = true;
       return std::nullopt;
     }
+    handles.before_step(lcc, cloth, scenario.solver.time_step);
     before_step = cloth.state;
     const StepStatus status = step(cloth.model, scenario.solver, cloth.state, workspace);
     steps.add(status, workspace);
@@ -353,11 +355,13 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   RunResult result;
   StepWorkspace workspace;
   TearStep tearing(scenario);
+  PinHandles handles(scenario.pins);
   SpeedLimit limit = speed_limit_at_start(cloth.model, scenario.solver, cloth.state);
+  limit.handle_speed_m_per_s = handles.fastest_speed_m_per_s(cloth.state);
   State before_step;
   for (int frame = 1; frame <= frame_count; ++frame) {
     FrameSteps steps;
-    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, tearing, limit,
+    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, handles, tearing, limit,
                                            before_step, steps, options.stop)) {
       write_back(cloth, cloth.state, lcc);  // the state before the step that diverged
       const auto last_good =

@@ -6,17 +6,38 @@
 namespace tissu {
 namespace {
 
-// fastest a keyframed obstacle moves: its drift plus its fastest keyframe segment (m/s)
-double fastest_obstacle_m_per_s(const ObstacleMotion& motion) {
-  double segment = 0.0;
-  for (std::size_t k = 1; k < motion.key_times_s.size(); ++k) {
-    const double duration_s = motion.key_times_s[k] - motion.key_times_s[k - 1];
-    if (duration_s > 0.0) {
-      segment = std::max(
-          segment, (motion.key_offsets_m[k] - motion.key_offsets_m[k - 1]).norm() / duration_s);
+/// How far the obstacle's surface reaches from its motion's pivot at t = 0 (m); a plane, which
+/// has no bound, reaches as far as the cloth does.
+double obstacle_reach_m(const Obstacle& obstacle, double cloth_reach_m) {
+  const Eigen::Vector3d& pivot = obstacle.motion.pivot_m;
+  const double centre_m = (obstacle.position - pivot).norm();
+  switch (obstacle.shape) {
+    case ObstacleShape::plane:
+      return cloth_reach_m;
+    case ObstacleShape::sphere:
+      return centre_m + obstacle.radius_m;
+    case ObstacleShape::capsule:
+      return std::max(centre_m, (obstacle.axis_end - pivot).norm()) + obstacle.radius_m;
+    case ObstacleShape::box:
+      return centre_m + obstacle.half_extents_m.norm();
+    case ObstacleShape::mesh: {
+      double reach_m = 0.0;
+      for (const Eigen::Vector3d& corner : obstacle.surface->triangle_corners()) {
+        reach_m = std::max(reach_m, (corner - pivot).norm());
+      }
+      return reach_m;
     }
   }
-  return motion.velocity.norm() + segment;
+  return cloth_reach_m;
+}
+
+/// Farthest particle from `point` at the start (m).
+double cloth_reach_m(const State& state, const Eigen::Vector3d& point) {
+  double reach_m = 0.0;
+  for (Eigen::Index p = 0; 3 * p < state.x.size(); ++p) {
+    reach_m = std::max(reach_m, (state.x.segment<3>(3 * p) - point).norm());
+  }
+  return reach_m;
 }
 
 }  // namespace
@@ -30,8 +51,11 @@ SpeedLimit speed_limit_at_start(const SpringModel& model, const SolverParams& pa
         std::max(limit.initial_speed_m_per_s, state.v.segment<3>(3 * p).norm());
   }
   for (const Obstacle& obstacle : params.obstacles) {
+    const RigidMotion& motion = obstacle.motion;
+    const double reach_m =
+        motion.rotates() ? obstacle_reach_m(obstacle, cloth_reach_m(state, motion.pivot_m)) : 0.0;
     limit.obstacle_speed_m_per_s =
-        std::max(limit.obstacle_speed_m_per_s, fastest_obstacle_m_per_s(obstacle.motion));
+        std::max(limit.obstacle_speed_m_per_s, motion.fastest_speed_m_per_s(reach_m));
   }
   const Wind& wind = params.environment.wind;
   limit.wind_speed_m_per_s = wind.velocity.norm() * (1.0 + std::abs(wind.gust_amplitude));
@@ -61,9 +85,9 @@ void widen_for_release(SpeedLimit& limit, const SpringModel& model, const State&
 
 double speed_limit_m_per_s(const SpeedLimit& limit, double time_s) {
   const double elapsed_s = std::max(0.0, time_s - limit.start_time_s);
-  return limit.margin *
-         (limit.initial_speed_m_per_s + limit.obstacle_speed_m_per_s + limit.wind_speed_m_per_s +
-          limit.gravity_m_per_s2 * elapsed_s + limit.release_speed_m_per_s);
+  return limit.margin * (limit.initial_speed_m_per_s + limit.obstacle_speed_m_per_s +
+                         limit.handle_speed_m_per_s + limit.wind_speed_m_per_s +
+                         limit.gravity_m_per_s2 * elapsed_s + limit.release_speed_m_per_s);
 }
 
 std::optional<Overspeed> find_overspeed(const SpeedLimit& limit, const SpringModel& model,

@@ -26,11 +26,14 @@ struct SpeedLimit {
   /// the shipped scenarios stay below 0.12 of the limit (docs/scenario.md), an unstable explicit
   /// step multiplies speeds by (h omega)^2, 1e2 to 1e5 on the scenes that blow up.
   double margin = 10.0;
-  double start_time_s = 0.0;            ///< time at which the run starts (s)
-  double initial_speed_m_per_s = 0.0;   ///< fastest particle at the start, pinned ones too
-  double obstacle_speed_m_per_s = 0.0;  ///< fastest obstacle over its whole motion
-  double wind_speed_m_per_s = 0.0;      ///< strongest wind, |w| (1 + |gust amplitude|)
-  double gravity_m_per_s2 = 0.0;        ///< |g|
+  double start_time_s = 0.0;           ///< time at which the run starts (s)
+  double initial_speed_m_per_s = 0.0;  ///< fastest particle at the start, pinned ones too
+  /// fastest point of an obstacle over its whole motion: of the surface, for a rotating one (of
+  /// a rotating plane, as far from its pivot as the cloth at the start)
+  double obstacle_speed_m_per_s = 0.0;
+  double handle_speed_m_per_s = 0.0;  ///< fastest keyframed pin handle (set by the caller)
+  double wind_speed_m_per_s = 0.0;    ///< strongest wind, |w| (1 + |gust amplitude|)
+  double gravity_m_per_s2 = 0.0;      ///< |g|
   /// fastest a spring can have let go of an end so far, spring_release_speed_m_per_s() at the
   /// start and after every tear or cut (widen_for_release())
   double release_speed_m_per_s = 0.0;

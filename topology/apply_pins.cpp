@@ -99,9 +99,12 @@ int apply_pins(ClothComplex& lcc, const std::vector<PinSelector>& selectors,
   const std::vector<Candidate> all = candidates_of(lcc, frame);
   if (all.empty()) return 0;
   for (std::size_t k = 0; k < selectors.size(); ++k) {
-    for (Vertex_handle v : select(all, selectors[k], "pins[" + std::to_string(k) + "]")) {
-      v->info().pinned = true;
-      v->info().velocity = to_vector(selectors[k].velocity);
+    const PinSelector& s = selectors[k];
+    for (Vertex_handle v : select(all, s, "pins[" + std::to_string(k) + "]")) {
+      v->info().pin_group = static_cast<int>(k);
+      v->info().pinned = s.attach_at_s <= 0.0;
+      if (v->info().pinned)
+        v->info().velocity = to_vector(s.motion.point_velocity(to_eigen(v->point()), 0.0));
     }
   }
   return static_cast<int>(std::count_if(

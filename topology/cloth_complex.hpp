@@ -59,7 +59,10 @@ struct Particle {
   double mass = 0.0;                     ///< lumped mass (kg)
   Point3 rest_position = CGAL::ORIGIN;   ///< material coordinates (m)
   bool pinned = false;                   ///< motion prescribed (velocity kept)
-  int source_index = -1;                 ///< index in the input grid or mesh, -1 if created
+  /// The scenario's pins entry that holds it, or will hold it (PinSelector::attach_at_s), -1 for
+  /// none: the handle that moves it, and lets it go (lib/pin_handles.hpp)
+  int pin_group = -1;
+  int source_index = -1;  ///< index in the input grid or mesh, -1 if created
   /// index in the SpringModel last compiled from the complex: valid from a compile() until the
   /// next topological edit, which leaves it stale, or -1 or copied on particles it creates
   int index_at_last_compile = -1;

@@ -3,8 +3,11 @@
 /// Which particles are pinned: selectors over the cloth's material coordinates. CGAL-free.
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <string>
 #include <vector>
+
+#include "solver/rigid_motion.hpp"
 
 namespace tissu {
 
@@ -29,8 +32,13 @@ struct PinSelector {
   /// build_scenario_cloth)
   std::vector<int> indices;
   Eigen::AlignedBox3d box;  ///< kind == box: material coordinates inside it (m)
-  /// Velocity the chosen particles keep (m/s): a handle moving at constant speed
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  /// The handle's motion: its drift is the velocity the chosen particles keep (m/s, a handle
+  /// moving at constant speed); its keyframes carry them rigidly from where they are when the
+  /// handle takes hold (lib/pin_handles.hpp).
+  RigidMotion motion;
+  double attach_at_s = 0.0;  ///< when the handle takes hold of its particles (s); 0: from the start
+  /// when it lets them go, keeping their velocity (s); infinity: never
+  double release_at_s = std::numeric_limits<double>::infinity();
 };
 
 /// Thrown when a selector selects nothing or names a vertex that does not exist; the message

@@ -36,6 +36,9 @@ Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings
   middle.split_edge_end = pa.rest_position;
   // an edge held at both ends (a clamp) stays held along its length
   middle.pinned = pa.pinned && pb.pinned;
+  // on one handle's edge it belongs to that handle; between two handles' particles, to the first
+  // one's (lib/pin_handles.hpp)
+  middle.pin_group = pa.pin_group == pb.pin_group || middle.pinned ? pa.pin_group : -1;
 
   // dart: a -> m afterwards, next(dart): m -> b; across, opposite<2>(dart): m -> a
   const Vertex_handle m =

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
+#include "lib/scenario/read_motion.hpp"
 #include "lib/scenario/scenario_limits.hpp"
 
 namespace tissu {
@@ -164,7 +167,20 @@ PinSelector read_pin(JsonObjectReader pin) {
     s.kind = PinSelector::Kind::box;
     s.box = pin.box("box");
   }
-  s.velocity = pin.vector3_or("velocity", s.velocity);
+  if (pin.has("motion")) {
+    if (pin.has("velocity")) {
+      pin.fail("velocity", "no \"velocity\" beside \"motion\" (give it as motion.velocity)");
+    }
+    s.motion = read_motion(pin.object("motion"), std::nullopt);
+  } else {
+    s.motion.drift_m_per_s = pin.vector3_or("velocity", Eigen::Vector3d::Zero());
+  }
+  s.attach_at_s = pin.number_or("attach_at", 0.0, non_negative(" (s)"));
+  if (pin.has("release_at")) {
+    s.release_at_s =
+        pin.number("release_at", {s.attach_at_s, std::numeric_limits<double>::infinity(), true,
+                                  "a time (s) after attach_at"});
+  }
   pin.finish();
   return s;
 }

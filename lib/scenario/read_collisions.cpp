@@ -3,48 +3,15 @@
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <limits>
-#include <numbers>
 #include <string>
 
 #include "lib/mesh_io/read_mesh.hpp"
+#include "lib/scenario/read_motion.hpp"
 #include "lib/scenario/scenario_limits.hpp"
 #include "topology/mesh_obstacle.hpp"
 
 namespace tissu {
 namespace {
-
-ObstacleMotion read_motion(JsonObjectReader motion) {
-  ObstacleMotion m;
-  m.velocity = motion.vector3_or("velocity", m.velocity);
-  if (motion.has("keyframes")) {
-    for (const ArrayElement& element : motion.array("keyframes")) {
-      JsonObjectReader key = object_reader(element, motion.file());
-      const double time_s = key.number("time", non_negative(" (s)"));
-      if (!m.key_times_s.empty() && time_s <= m.key_times_s.back()) {
-        key.fail("time", "a time after the previous keyframe's " +
-                             std::to_string(m.key_times_s.back()) + " s");
-      }
-      m.key_times_s.push_back(time_s);
-      m.key_offsets_m.push_back(key.vector3("offset"));
-      key.finish();
-    }
-  }
-  motion.finish();
-  return m;
-}
-
-/// A rotation about "axis" (default +z) by exactly one of "angle" (rad) or "degrees".
-Eigen::Matrix3d read_rotation(JsonObjectReader rotation) {
-  const Eigen::Vector3d axis = rotation.direction_or("axis", Eigen::Vector3d::UnitZ());
-  if (rotation.has("angle") == rotation.has("degrees")) {
-    rotation.fail("angle", "exactly one of \"angle\" (rad) and \"degrees\"");
-  }
-  const double angle_rad = rotation.has("angle")
-                               ? rotation.number("angle", {})
-                               : rotation.number("degrees", {}) * std::numbers::pi / 180.0;
-  rotation.finish();
-  return Eigen::AngleAxisd(angle_rad, axis).toRotationMatrix();
-}
 
 /// A mesh file (relative to the scenario's folder), scaled about its origin, rotated about it,
 /// then moved by "position", as a distance field. Faces the surface dropped are noted.
@@ -57,8 +24,9 @@ std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
   o.resolve("file", std::filesystem::absolute(file).string());  // runs from any folder
   const double scale =
       o.number_or("scale", 1.0, between(min_obstacle_scale, max_obstacle_scale, ""));
-  const Eigen::Matrix3d rotation =
-      o.has("rotation") ? read_rotation(o.object("rotation")) : Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d rotation = o.has("rotation")
+                                       ? rotation_of(read_rotation_vector(o.object("rotation")))
+                                       : Eigen::Matrix3d::Identity();
   const Eigen::Vector3d position = o.vector3_or("position", Eigen::Vector3d::Zero());
   try {
     IndexedMesh mesh = read_polygons(file);
@@ -75,6 +43,16 @@ std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
   } catch (const MeshError& e) {
     throw ScenarioError(o.file() + ": " + o.key_path("file") + ": " + e.what());
   }
+}
+
+/// Where an obstacle's rotations turn about unless its motion says: its centre (a sphere's or a
+/// box's), the first end of a capsule's axis, a plane's point, the mean of a mesh's corners.
+Eigen::Vector3d default_pivot(const Obstacle& obstacle) {
+  if (obstacle.shape != ObstacleShape::mesh) return obstacle.position;
+  const std::vector<Eigen::Vector3d>& corners = obstacle.surface->triangle_corners();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& corner : corners) sum += corner;
+  return corners.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(corners.size()));
 }
 
 Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
@@ -101,13 +79,13 @@ Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
     ob.position = o.vector3("center");
     const std::vector<double> size = o.numbers("size", 3, positive(" (m)"));
     ob.half_extents_m = 0.5 * Eigen::Vector3d(size[0], size[1], size[2]);
-    if (o.has("rotation")) ob.rotation = read_rotation(o.object("rotation"));
+    if (o.has("rotation")) ob.rotation = rotation_of(read_rotation_vector(o.object("rotation")));
   }
   ob.thickness_m = o.number_or("thickness", ob.thickness_m, non_negative(" (m)"));
   ob.static_friction = o.number_or("static_friction", 0.0, non_negative(""));
   ob.kinetic_friction = o.number_or("kinetic_friction", ob.static_friction,
                                     between(0.0, ob.static_friction, " (at most static_friction)"));
-  if (o.has("motion")) ob.motion = read_motion(o.object("motion"));
+  if (o.has("motion")) ob.motion = read_motion(o.object("motion"), default_pivot(ob));
   o.finish();
   return ob;
 }

@@ -33,31 +33,9 @@ SurfaceDistance box_distance(const Obstacle& box, const Eigen::Vector3d& centre,
   return {depth, box.rotation * local};
 }
 
-}  // namespace
-
-Eigen::Vector3d ObstacleMotion::offset_m(double time_s) const {
-  Eigen::Vector3d offset = velocity * time_s;
-  if (key_times_s.empty()) return offset;
-  const auto after = std::upper_bound(key_times_s.begin(), key_times_s.end(), time_s);
-  if (after == key_times_s.begin()) return offset + key_offsets_m.front();
-  if (after == key_times_s.end()) return offset + key_offsets_m.back();
-  const std::size_t k = after - key_times_s.begin();
-  const double s = (time_s - key_times_s[k - 1]) / (key_times_s[k] - key_times_s[k - 1]);
-  return offset + (1.0 - s) * key_offsets_m[k - 1] + s * key_offsets_m[k];
-}
-
-Eigen::Vector3d ObstacleMotion::velocity_at(double time_s) const {
-  if (key_times_s.empty()) return velocity;
-  const auto after = std::upper_bound(key_times_s.begin(), key_times_s.end(), time_s);
-  if (after == key_times_s.begin() || after == key_times_s.end()) return velocity;
-  const std::size_t k = after - key_times_s.begin();
-  return velocity +
-         (key_offsets_m[k] - key_offsets_m[k - 1]) / (key_times_s[k] - key_times_s[k - 1]);
-}
-
-SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
-                                 double time_s) {
-  const Eigen::Vector3d offset = obstacle.motion.offset_m(time_s);
+/// The distance to `obstacle` translated by `offset` (m) from its place at t = 0.
+SurfaceDistance translated_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
+                                    const Eigen::Vector3d& offset) {
   const Eigen::Vector3d position = obstacle.position + offset;
   switch (obstacle.shape) {
     case ObstacleShape::plane:
@@ -76,6 +54,20 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d
       return obstacle.surface->distance(x - offset);
   }
   return {};
+}
+
+}  // namespace
+
+SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
+                                 double time_s) {
+  if (!obstacle.motion.moves()) return translated_distance(obstacle, x, Eigen::Vector3d::Zero());
+  const RigidPose pose = obstacle.motion.pose(time_s);
+  if (!obstacle.motion.rotates()) return translated_distance(obstacle, x, pose.translation_m);
+  // measured in the obstacle's place at t = 0, the normal turned with it
+  SurfaceDistance at_rest =
+      translated_distance(obstacle, pose.apply_inverse(x), Eigen::Vector3d::Zero());
+  at_rest.normal = pose.rotation * at_rest.normal;
+  return at_rest;
 }
 
 }  // namespace tissu

@@ -7,6 +7,8 @@
 #include <memory>
 #include <vector>
 
+#include "solver/rigid_motion.hpp"
+
 namespace tissu {
 
 /// The nearest point of an obstacle's surface to a point.
@@ -34,17 +36,6 @@ enum class ObstacleShape {
   mesh,     ///< a triangle mesh (`surface`)
 };
 
-/// A translation that follows keyframes, linear between them and held after the last, plus a
-/// constant drift: offset(t) = keyframes(t) + velocity t.
-struct ObstacleMotion {
-  std::vector<double> key_times_s;                     ///< increasing; empty: no keyframes
-  std::vector<Eigen::Vector3d> key_offsets_m;          ///< one per key time
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< constant drift (m/s)
-
-  Eigen::Vector3d offset_m(double time_s) const;
-  Eigen::Vector3d velocity_at(double time_s) const;  ///< d offset / dt (m/s)
-};
-
 struct Obstacle {
   ObstacleShape shape = ObstacleShape::plane;
   /// plane: a point on it; sphere and box: the centre; capsule: one end of its axis (m), at t = 0
@@ -59,7 +50,7 @@ struct Obstacle {
   double thickness_m = 0.005;
   double static_friction = 0.0;   ///< mu_s: sticks while |v_t| <= mu_s dv_n
   double kinetic_friction = 0.0;  ///< mu_k: otherwise |v_t| loses mu_k dv_n
-  ObstacleMotion motion;
+  RigidMotion motion;             ///< from its place at t = 0
 };
 
 /// Signed distance from `x` (m) to the surface of `obstacle` at time `time_s`, and the outward

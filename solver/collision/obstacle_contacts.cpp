@@ -63,7 +63,7 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, double h, doubl
   const Eigen::Vector3d& n = surface.normal;
   x += std::max(0.0, obstacle.thickness_m - surface.distance_m) * n;
 
-  const Eigen::Vector3d v_obstacle = obstacle.motion.velocity_at(time_s);
+  const Eigen::Vector3d v_obstacle = obstacle.motion.point_velocity(x, time_s);
   const Eigen::Vector3d relative = v - v_obstacle;
   const double v_n = relative.dot(n);
   if (v_n >= 0.0) return n;  // already leaving

@@ -169,9 +169,9 @@ TEST(ObstacleMesh, RotatedBoxHasEightCornersAndTwelveFlatOutwardTriangles) {
 TEST(ObstacleMesh, FollowsTheObstacleMotion) {
   for (Obstacle o : {sphere({0, 0, 0.5}, 0.3), capsule({0, 0, 0}, {0.4, 0, 0.2}, 0.1),
                      box({0, 0, 0}, {0.2, 0.3, 0.1}, tilted)}) {
-    o.motion.key_times_s = {0.0, 1.0};
-    o.motion.key_offsets_m = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 0.8)};
-    o.motion.velocity = {0.5, 0.0, 0.0};
+    o.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                     {1.0, Eigen::Vector3d(0.0, 0.0, 0.8), Eigen::Vector3d::Zero()}};
+    o.motion.drift_m_per_s = {0.5, 0.0, 0.0};
     const double t = 0.5;  // offset (0.25, 0, 0.4)
     const IndexedMesh at_rest = obstacle_mesh(o, 0.0), moved = obstacle_mesh(o, t);
     ASSERT_EQ(moved.vertices.size(), at_rest.vertices.size());
@@ -201,7 +201,7 @@ TEST(GroundHeight, IsTheHighestUpwardPlaneWhereItHasMovedTo) {
   EXPECT_FALSE(ground_height_m({wall, ceiling}, 0.0)) << "only planes facing +z are ground";
 
   Obstacle rising = floor_at(-1.0);
-  rising.motion.velocity = {0.0, 0.0, 2.0};
+  rising.motion.drift_m_per_s = {0.0, 0.0, 2.0};
   const std::vector<Obstacle> scene{wall, floor_at(0.25), rising, ceiling};
   EXPECT_EQ(ground_height_m(scene, 0.0), 0.25);
   EXPECT_EQ(ground_height_m(scene, 1.0), 1.0);  // the rising floor is now the higher

@@ -298,12 +298,12 @@ TEST(Scenario, ReadsObstaclesOfEveryShape) {
   EXPECT_DOUBLE_EQ(o[0].kinetic_friction, 0.5);  // defaults to the static coefficient
   EXPECT_DOUBLE_EQ(o[1].radius_m, 0.3);
   EXPECT_DOUBLE_EQ(o[1].thickness_m, 0.01);
-  EXPECT_EQ(o[1].motion.velocity, Eigen::Vector3d(0, 0, -1));
+  EXPECT_EQ(o[1].motion.drift_m_per_s, Eigen::Vector3d(0, 0, -1));
   EXPECT_EQ(o[2].axis_end, Eigen::Vector3d(1, 0, 0));
   EXPECT_DOUBLE_EQ(o[2].kinetic_friction, 0.4);
   EXPECT_EQ(o[3].half_extents_m, Eigen::Vector3d(1, 2, 3));
   EXPECT_TRUE((o[3].rotation * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
-  EXPECT_TRUE(o[3].motion.offset_m(1.0).isApprox(Eigen::Vector3d(0, 0, 0.5)));
+  EXPECT_TRUE(o[3].motion.pose(1.0).translation_m.isApprox(Eigen::Vector3d(0, 0, 0.5)));
 }
 
 TEST(Scenario, ReadsSelfCollision) {
@@ -344,7 +344,7 @@ TEST(Scenario, ReadsTearing) {
 
   const Scenario pulled = parse_scenario(test::minimal_scenario, "s.json",
                                          {R"(pins=[{ "side": "top", "velocity": [0, 0, 0.1] }])"});
-  EXPECT_EQ(pulled.pins.at(0).velocity, Eigen::Vector3d(0, 0, 0.1));
+  EXPECT_EQ(pulled.pins.at(0).motion.drift_m_per_s, Eigen::Vector3d(0, 0, 0.1));
 }
 
 TEST(Scenario, BadTearingIsNamed) {

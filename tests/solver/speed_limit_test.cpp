@@ -41,9 +41,10 @@ TEST(SpeedLimit, AddsGravityOverTheElapsedTimeObstaclesWindAndTheStartingStretch
   params.environment.wind.gust_amplitude = 0.5;
   Obstacle ball;
   ball.shape = ObstacleShape::sphere;
-  ball.motion.key_times_s = {0.0, 1.0, 3.0};
-  ball.motion.key_offsets_m = {Eigen::Vector3d::Zero(), {0.0, 0.0, -0.5}, {0.0, 0.0, -0.6}};
-  ball.motion.velocity = {0.1, 0.0, 0.0};
+  ball.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                      {1.0, {0.0, 0.0, -0.5}, Eigen::Vector3d::Zero()},
+                      {3.0, {0.0, 0.0, -0.6}, Eigen::Vector3d::Zero()}};
+  ball.motion.drift_m_per_s = {0.1, 0.0, 0.0};
   params.obstacles = {ball};
 
   const SpeedLimit limit = speed_limit_at_start(model, params, state);

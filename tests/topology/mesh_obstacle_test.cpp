@@ -288,8 +288,8 @@ TEST(MeshSurface, AParticleDroppedOnAMovedMeshRestsOnTop) {
   Obstacle block;
   block.shape = ObstacleShape::mesh;
   block.surface = make_mesh_surface(cube());
-  block.motion.key_times_s = {0.0};
-  block.motion.key_offsets_m = {Eigen::Vector3d(0.0, 0.0, -1.0)};  // top face at z = 0
+  block.motion.keys = {
+      {0.0, Eigen::Vector3d(0.0, 0.0, -1.0), Eigen::Vector3d::Zero()}};  // top face at z = 0
   State state;
   const SpringModel model =
       test::lone_particle(Eigen::Vector3d(0.3, -0.2, 0.5), Eigen::Vector3d::Zero(), state);

@@ -166,7 +166,7 @@ TEST(ObstacleContacts, AParticleLeavingTheFloorIsLetGo) {
 TEST(ObstacleContacts, AMovingObstacleCarriesTheParticleAndPinsStay) {
   // a floor rising at 1 m/s lifts a particle resting on it; a pinned particle is not touched
   Obstacle lift;
-  lift.motion.velocity = {0.0, 0.0, 1.0};
+  lift.motion.drift_m_per_s = {0.0, 0.0, 1.0};
   State state;
   SpringModel model =
       test::lone_particle({0.0, 0.0, lift.thickness_m}, Eigen::Vector3d::Zero(), state);
@@ -181,6 +181,49 @@ TEST(ObstacleContacts, AMovingObstacleCarriesTheParticleAndPinsStay) {
   state.v.setZero();
   for (int n = 0; n < 10; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
   EXPECT_EQ(state.x.z(), -1.0);
+}
+
+/// A 2 m x 2 m turntable whose top is at z = 0, turning about z at `omega` rad/s for 10 s.
+Obstacle turntable(double omega_rad_per_s, double friction) {
+  Obstacle plate;
+  plate.shape = ObstacleShape::box;
+  plate.position = {0.0, 0.0, -0.05};
+  plate.half_extents_m = {1.0, 1.0, 0.05};
+  plate.static_friction = plate.kinetic_friction = friction;
+  plate.motion.pivot_m = Eigen::Vector3d::Zero();
+  plate.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                       {10.0, Eigen::Vector3d::Zero(), {0.0, 0.0, 10.0 * omega_rad_per_s}}};
+  return plate;
+}
+
+TEST(ObstacleContacts, ARotatingPlateCarriesAParticleByFriction) {
+  // half a turn per second, 0.5 m out: 1.57 m/s, and omega^2 r = 4.9 m/s^2 of centripetal
+  // acceleration, which friction (mu g = 9.8 m/s^2) can give
+  constexpr double omega = M_PI, radius_m = 0.5;
+  const Obstacle plate = turntable(omega, 1.0);
+  State state;
+  SpringModel model =
+      test::lone_particle({radius_m, 0.0, plate.thickness_m}, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = params_with(Integrator::implicit_euler, plate);
+  for (int n = 0; n < 1000; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  const double angle_at_1s = std::atan2(state.x.y(), state.x.x());
+  for (int n = 0; n < 500; ++n) ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  const double angle_at_1_5s = std::atan2(state.x.y(), state.x.x());  // a quarter turn later
+
+  // it caught up with the plate (in mu g / (omega r) ~ 0.16 s) and turns with it
+  EXPECT_NEAR(std::remainder(angle_at_1_5s - angle_at_1s, 2 * M_PI), omega * 0.5, 0.02);
+  EXPECT_NEAR(std::hypot(state.x.x(), state.x.y()), radius_m, 0.01);
+  EXPECT_NEAR(state.v.norm(), omega * radius_m, 0.03);
+  EXPECT_NEAR(state.x.z(), plate.thickness_m, 1e-6);
+
+  // without friction the plate turns under it and it stays where it was
+  const Obstacle slippery = turntable(omega, 0.0);
+  model =
+      test::lone_particle({radius_m, 0.0, slippery.thickness_m}, Eigen::Vector3d::Zero(), state);
+  const SolverParams slippery_params = params_with(Integrator::implicit_euler, slippery);
+  for (int n = 0; n < 1000; ++n) ASSERT_EQ(step(model, slippery_params, state), StepStatus::ok);
+  EXPECT_NEAR(state.x.x(), radius_m, 1e-9);
+  EXPECT_NEAR(state.x.y(), 0.0, 1e-9);
 }
 
 }  // namespace

@@ -59,21 +59,40 @@ TEST(ObstacleDistance, BoxMeasuresToFacesEdgesAndCornersAndRotates) {
 }
 
 TEST(ObstacleMotion, FollowsKeyframesLinearlyAndDrifts) {
-  ObstacleMotion m;
-  m.key_times_s = {1.0, 3.0};
-  m.key_offsets_m = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, -2)};
-  m.velocity = {0.5, 0.0, 0.0};
-  EXPECT_TRUE(m.offset_m(0.0).isApprox(Eigen::Vector3d(0, 0, 0)));  // held before the first key
-  EXPECT_TRUE(m.offset_m(2.0).isApprox(Eigen::Vector3d(1.0, 0, -1)));
-  EXPECT_TRUE(m.offset_m(5.0).isApprox(Eigen::Vector3d(2.5, 0, -2)));  // held after the last
-  EXPECT_TRUE(m.velocity_at(2.0).isApprox(Eigen::Vector3d(0.5, 0, -1)));
-  EXPECT_TRUE(m.velocity_at(4.0).isApprox(Eigen::Vector3d(0.5, 0, 0)));
+  RigidMotion m;
+  m.keys = {{1.0, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::Zero()},
+            {3.0, Eigen::Vector3d(0, 0, -2), Eigen::Vector3d::Zero()}};
+  m.drift_m_per_s = {0.5, 0.0, 0.0};
+  const auto offset = [&m](double t) { return m.pose(t).translation_m; };
+  EXPECT_TRUE(offset(0.0).isApprox(Eigen::Vector3d(0, 0, 0)));  // held before the first key
+  EXPECT_TRUE(offset(2.0).isApprox(Eigen::Vector3d(1.0, 0, -1)));
+  EXPECT_TRUE(offset(5.0).isApprox(Eigen::Vector3d(2.5, 0, -2)));  // held after the last
+  EXPECT_TRUE(m.point_velocity({0, 0, 0}, 2.0).isApprox(Eigen::Vector3d(0.5, 0, -1)));
+  EXPECT_TRUE(m.point_velocity({0, 0, 0}, 4.0).isApprox(Eigen::Vector3d(0.5, 0, 0)));
 
   Obstacle ball;
   ball.shape = ObstacleShape::sphere;
   ball.radius_m = 1.0;
   ball.motion = m;
   expect_surface(ball, {1.0, 0.0, -1.0}, -1.0, Eigen::Vector3d::UnitZ(), 2.0);  // centre moved
+}
+
+TEST(ObstacleMotion, ARotatingObstacleTurnsItsSurfaceAndNormals) {
+  // a 2 x 0.2 x 2 m slab centred at the origin turns a quarter about z in 1 s, pivot at its centre
+  Obstacle slab;
+  slab.shape = ObstacleShape::box;
+  slab.half_extents_m = {1.0, 0.1, 1.0};
+  slab.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                      {1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, M_PI / 2)}};
+  expect_surface(slab, {0.0, 0.5, 0.0}, 0.4, Eigen::Vector3d::UnitY(), 0.0);
+  // a quarter turn later its thin side faces -x and +x
+  expect_surface(slab, {0.5, 0.0, 0.0}, 0.4, Eigen::Vector3d::UnitX(), 1.0);
+  expect_surface(slab, {0.0, 1.5, 0.0}, 0.5, Eigen::Vector3d::UnitY(), 1.0);
+  // half way, the point 1 m out along the slab moves at omega r = pi/2 m/s, tangentially
+  const Eigen::Vector3d tip = slab.motion.pose(0.5).apply({1.0, 0.0, 0.0});
+  const Eigen::Vector3d v = slab.motion.point_velocity(tip, 0.5);
+  EXPECT_NEAR(v.norm(), M_PI / 2, 1e-12);
+  EXPECT_NEAR(v.dot(tip), 0.0, 1e-12);
 }
 
 }  // namespace
