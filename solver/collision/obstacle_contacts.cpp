@@ -61,20 +61,24 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, double h, doubl
     }
   }
   const Eigen::Vector3d& n = surface.normal;
-  x += std::max(0.0, obstacle.thickness_m - surface.distance_m) * n;
+  const double pushed_m = std::max(0.0, obstacle.thickness_m - surface.distance_m);
+  x += pushed_m * n;
 
   const Eigen::Vector3d v_obstacle = obstacle.motion.point_velocity(x, time_s);
   const Eigen::Vector3d relative = v - v_obstacle;
   const double v_n = relative.dot(n);
-  if (v_n >= 0.0) return n;  // already leaving
-  const double dv_n = -v_n;
+  // the normal impulse per unit mass: the approach it stops, or the push out of the surface over
+  // the step if that is more (a cloth squeezed between two surfaces is pushed out of each at
+  // every step without approaching either, and is held by friction)
+  const double dv_n = std::max(-v_n, pushed_m / h);
+  if (!(dv_n > 0.0)) return n;  // leaving, and not pushed
   const Eigen::Vector3d v_t = relative - v_n * n;
   const double speed_t = v_t.norm();
   const Eigen::Vector3d v_t_after =
       speed_t <= obstacle.static_friction * dv_n
           ? Eigen::Vector3d::Zero()
           : Eigen::Vector3d(std::max(0.0, 1.0 - obstacle.kinetic_friction * dv_n / speed_t) * v_t);
-  v = v_obstacle + v_t_after;
+  v = v_obstacle + std::max(0.0, v_n) * n + v_t_after;  // an approach removed, a departure kept
   x += h * (v_t_after - v_t);
   return n;
 }

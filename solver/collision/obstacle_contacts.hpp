@@ -15,7 +15,8 @@ namespace tissu {
 /// - position: moved along the outward normal n to distance thickness; this adds no velocity,
 ///   so resolving a contact never adds energy;
 /// - velocity relative to the obstacle, v_r = v - v_obstacle: an approaching normal part
-///   v_n = v_r . n < 0 is removed (inelastic contact), an impulse dv_n = -v_n per unit mass;
+///   v_n = v_r . n < 0 is removed (inelastic contact), an impulse dv_n = -v_n per unit mass, or
+///   d / h if the particle was pushed out by d and that is more (a squeezed particle);
 /// - friction on the tangential part v_t (Coulomb): it stops if |v_t| <= mu_s dv_n (static),
 ///   else loses mu_k dv_n of its length, down to zero (kinetic); the position then moves by h times
 ///   the change of v_t, so that x_{n+1} - x_n = h v_{n+1} holds along the surface as it does in the

@@ -100,7 +100,8 @@ TEST(CutWithSelfCollision, PiecesThatMeetAfterTheCutDoNotPassThroughEachOther) {
     EXPECT_EQ(test::intersecting_face_pairs(r.surfaces[f]), 0) << "frame " << f;
   }
   // they met: particles of the upper half (material z between the cuts) lie within 1 cm of
-  // particles of the lower half
+  // particles of the lower half (16 of them since the floor's friction counts the weight of the
+  // upper layer pressing the lower one on it; more than 20 before)
   const MaterialSurface& last = r.surfaces.back();
   int close = 0;
   for (std::size_t u = 0; u < last.rest_m.size(); ++u) {
@@ -114,7 +115,7 @@ TEST(CutWithSelfCollision, PiecesThatMeetAfterTheCutDoNotPassThroughEachOther) {
       }
     }
   }
-  EXPECT_GT(close, 20);
+  EXPECT_GT(close, 10);
 }
 
 TEST(CutWithSelfCollision, TheTearingDemoTearsAsItDoesWithoutSelfCollision) {

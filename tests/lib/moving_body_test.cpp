@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <string>
+#include <utility>
 
 #include "lib/scenario/scenario.hpp"
 #include "lib/simulation.hpp"
@@ -41,6 +43,54 @@ TEST(MovingBody, TheSkirtStaysOutsideTheWalkingBody) {
   // signed distance >= -thickness: no particle inside a part (the thickness is the cloth's half)
   EXPECT_GE(deepest_m, 0.0);
   EXPECT_GT(leg_contacts, 100) << "the legs never reached the skirt: the scene tests nothing";
+}
+
+/// A 0.2 m x 0.4 m strip hanging from pins, its top 10 cm between two plates that close on it
+/// in 0.3 s (squeezing it into their 5 mm thickness); the pins let go at 0.5 s.
+std::string closing_hand(double friction) {
+  const std::string plate = R"({ "type": "box", "size": [0.3, 0.1, 0.1], "static_friction": )" +
+                            std::to_string(friction) + ", ";
+  return R"({
+  "cloth": { "grid": { "size": [0.2, 0.4], "resolution": [8, 16], "origin": [-0.1, 0, 0.6] },
+             "density": 0.2,
+             "springs": { "structural": { "stiffness": 500, "damping": 0.2 },
+                          "bending": { "stiffness": 0.01 } } },
+  "pins": [ { "side": "top", "release_at": 0.5 } ],
+  "environment": { "gravity": [0, 0, -9.81] },
+  "obstacles": [
+    )" + plate +
+         R"("center": [0, 0.06, 0.95],
+      "motion": { "keyframes": [ { "time": 0 }, { "time": 0.3, "offset": [0, -0.008, 0] } ] } },
+    )" + plate +
+         R"("center": [0, -0.06, 0.95],
+      "motion": { "keyframes": [ { "time": 0 }, { "time": 0.3, "offset": [0, 0.008, 0] } ] } } ],
+  "simulation": { "frames": 60, "frame_rate": 30, "substeps": 4 },
+  "output": { "meshes": false, "viewer": false, "point_cache": false }
+})";
+}
+
+/// Lowest point of the cloth at frames 15 (just before the pins let go) and 60 (m).
+std::pair<double, double> lowest_before_and_after(const std::string& json) {
+  RunOptions options;
+  options.output_dir = test::fresh_temp_dir("moving_body/hand");
+  std::map<int, double> lowest;
+  options.on_surface = [&](int frame, const MaterialSurface& surface) {
+    double z = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& x : surface.current.vertices) z = std::min(z, x.z());
+    lowest[frame] = z;
+  };
+  const RunResult result = run_scenario(parse_scenario(json, "hand.json"), options);
+  EXPECT_TRUE(result.ok) << result.failure;
+  return {lowest.at(15), lowest.at(60)};
+}
+
+TEST(MovingBody, AClosingHandHoldsASheetByFriction) {
+  // held: after the pins let go the strip stays where it hung, within 1 cm over 1.5 s
+  const auto [held_before, held_after] = lowest_before_and_after(closing_hand(1.0));
+  EXPECT_NEAR(held_after, held_before, 0.01);
+  // without friction it slips out and falls (1.5 s of free fall is 11 m)
+  const auto [slippery_before, slippery_after] = lowest_before_and_after(closing_hand(0.0));
+  EXPECT_LT(slippery_after, slippery_before - 1.0);
 }
 
 }  // namespace
