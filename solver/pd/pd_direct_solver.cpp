@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/parallel.hpp"
+#include "solver/pd/nested_dissection_ordering.hpp"
 
 namespace tissu {
 namespace {
@@ -35,12 +36,30 @@ Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system) {
 }
 
 bool PdDirectSolver::factorize(const PdSystem& system) {
-  if (m_ldlt && m_generation == system.generation) return true;
+  const bool settled = m_solves_on_factor >= solves_before_nested_dissection;
+  if (m_ldlt && m_generation == system.generation && (m_nested_dissection || !settled)) {
+    return true;
+  }
+  m_nested_dissection = m_ldlt && m_generation == system.generation;  // settled: reorder it
   const int free_count = static_cast<int>(system.free_particles.size());
   const Matrix matrix = pd_free_particle_matrix(system);
+  // the orderings give P^-1 (new row -> row of A), as Eigen's factorisations expect them to
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+  if (m_nested_dissection) {
+    NestedDissectionOrdering()(matrix, inverse);
+  } else {
+    Eigen::AMDOrdering<int>()(matrix, inverse);
+  }
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation =
+      inverse.inverse();
+  m_permutation = permutation.indices();
+  Matrix permuted(free_count, free_count);
+  permuted.selfadjointView<Eigen::Lower>() =
+      matrix.selfadjointView<Eigen::Lower>().twistedBy(permutation);
   if (!m_ldlt) m_ldlt = std::make_unique<Factorization>();
-  m_ldlt->compute(matrix);
+  m_ldlt->compute(permuted);
   ++m_factorizations;
+  m_solves_on_factor = 0;
   if (m_ldlt->info() != Eigen::Success) {
     m_generation = 0;
     return false;
@@ -58,8 +77,9 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
 
 bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eigen::VectorXd& p) {
   if (!factorize(system)) return false;
+  ++m_solves_on_factor;
   const int free_count = static_cast<int>(system.free_particles.size());
-  const auto& permutation = m_ldlt->permutationP().indices();  // row -> permuted row
+  const Eigen::VectorXi& permutation = m_permutation;  // row -> permuted row
   // z = P b, b_row = c_i + sum over pinned neighbours j of s_ij p_j
 #pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int row = 0; row < free_count; ++row) {

@@ -13,7 +13,6 @@
 #include <memory>
 
 #include "solver/pd/factor_partition.hpp"
-#include "solver/pd/nested_dissection_ordering.hpp"
 #include "solver/pd/pd_system.hpp"
 
 namespace tissu {
@@ -23,10 +22,15 @@ namespace tissu {
 /// j; pinned neighbours go to the right-hand side.
 Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system);
 
-/// Sparse LDL^T (Eigen SimplicialLDLT, METIS nested-dissection ordering) of
-/// pd_free_particle_matrix(). Its triangular solves sweep the two halves of the factor below the
-/// top separator (factor_partition.hpp) on two OpenMP threads when there are two, always in the
-/// same order of operations: the same bits for any number of threads. Refactorised when the
+/// Sparse LDL^T (Eigen SimplicialLDLT) of pd_free_particle_matrix(), symmetrically permuted by a
+/// fill-reducing ordering chosen by how long the factor lives:
+/// - a new system is ordered by approximate minimum degree (Eigen's AMD), the cheaper to compute;
+/// - once that factor has served solves_before_nested_dissection solves, the system has settled
+///   (no remeshing) and it is factorised again under METIS's nested dissection, whose tree splits
+///   below its top separator into two halves of about equal work (factor_partition.hpp): the
+///   triangular solves then sweep the two halves on two OpenMP threads when there are two.
+/// AMD's tree is too lopsided to split. Both choices count solves, never threads, and the sweeps
+/// keep one order of operations: the same bits for any number of threads. Refactorised when the
 /// system's generation changes (update_pd_system() rebuilt it for a new model or time step).
 /// Copying gives an unfactorised solver (Eigen's factorisations are not copyable); it factorises
 /// again on first use.
@@ -37,6 +41,8 @@ class PdDirectSolver {
   PdDirectSolver& operator=(const PdDirectSolver&) {
     m_ldlt.reset();
     m_generation = 0;
+    m_nested_dissection = false;
+    m_solves_on_factor = 0;
     return *this;
   }
   PdDirectSolver(PdDirectSolver&&) noexcept = default;
@@ -54,11 +60,23 @@ class PdDirectSolver {
 
   /// Number of factorisations done by this object, for tests and benchmarks.
   int factorization_count() const { return m_factorizations; }
+  /// Whether the current factor is ordered by nested dissection (else by minimum degree).
+  bool nested_dissection() const { return m_nested_dissection; }
+
+  /// Solves a factor serves before it is redone under nested dissection. At 81 x 81 particles
+  /// METIS's ordering makes a factorisation about 17 ms slower (49 against 32 ms) and the
+  /// two-thread solve saves about 0.4 ms per solve; the adaptive curtain refactors every 20 to 40
+  /// solves, where nested dissection cost 14 to 17 % of its run (docs/benchmarks.md).
+  static constexpr int solves_before_nested_dissection = 100;
 
  private:
   using Matrix = Eigen::SparseMatrix<double>;
-  using Factorization = Eigen::SimplicialLDLT<Matrix, Eigen::Lower, NestedDissectionOrdering>;
+  /// of the permuted matrix P A P^T, which this class orders itself
+  using Factorization = Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::NaturalOrdering<int>>;
   std::unique_ptr<Factorization> m_ldlt;
+  Eigen::VectorXi m_permutation;  ///< #F row of A -> row of P A P^T
+  bool m_nested_dissection = false;
+  int m_solves_on_factor = 0;      ///< solves since the last factorisation
   FactorPartition m_partition;     ///< the factor's halves and separator
   std::uint64_t m_generation = 0;  ///< system generation of the factorisation, 0 = none
   int m_factorizations = 0;

@@ -202,6 +202,41 @@ TEST(PdDirectSolver, SolvesExactlyWithTheSameBitsOnOneAndTwoThreads) {
   }
 }
 
+// a new factor is ordered by minimum degree; one that has served enough solves is redone under
+// nested dissection, which gives the same solution and splits the solve on two threads, still
+// with the same bits as one thread
+TEST(PdDirectSolver, ASettledFactorIsReorderedByNestedDissection) {
+  State state;
+  const LinearProblem problem =
+      make_problem(test::grid_model(30, 30, 0.02, 0.001, 3000.0, 0.0, state), state, 1.0 / 30.0, 5);
+  PdDirectSolver direct;
+  const auto solve = [&] {
+    Eigen::VectorXd p = problem.start;
+    EXPECT_TRUE(direct.solve(problem.system, problem.rhs, p));
+    return p;
+  };
+  const Eigen::VectorXd by_minimum_degree = solve();
+  for (int k = 1; k < PdDirectSolver::solves_before_nested_dissection; ++k) solve();
+  EXPECT_FALSE(direct.nested_dissection());
+  EXPECT_EQ(direct.factorization_count(), 1);
+
+  const Eigen::VectorXd by_nested_dissection = solve();
+  EXPECT_TRUE(direct.nested_dissection());
+  EXPECT_EQ(direct.factorization_count(), 2);
+  const double scale_n = problem.rhs.lpNorm<Eigen::Infinity>();
+  EXPECT_LT(direct_residual_n(problem, by_nested_dissection), 1e-9 * scale_n);
+  EXPECT_LT((by_nested_dissection - by_minimum_degree).lpNorm<Eigen::Infinity>(),
+            1e-12 * by_minimum_degree.lpNorm<Eigen::Infinity>());
+
+  std::array<Eigen::VectorXd, 2> results;
+  for (int threads = 1; threads <= 2; ++threads) {
+    const test::ScopedThreadCount count(threads);
+    results[threads - 1] = solve();
+  }
+  EXPECT_EQ(direct.factorization_count(), 2);  // and it stays
+  EXPECT_TRUE((results[0].array() == results[1].array()).all());
+}
+
 TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
   State state;
   SpringModel model = test::grid_model(6, 5, 0.05, 0.002, 200.0, 0.0, state);
