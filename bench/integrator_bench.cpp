@@ -251,39 +251,25 @@ BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton_tight,  // tolerance 1e-3
 const std::vector<std::string> todays_settings = {"simulation.integrator=\"implicit_euler\"",
                                                   "simulation.substeps=10"};
 
-std::map<std::string, bench::RecordedRun>& todays_runs() {
-  static std::map<std::string, bench::RecordedRun> runs;
-  return runs;
-}
-
-/// Today's run of each scenario (implicit_euler, its own substeps), from its benchmark if it ran
-/// first, else run here once and kept.
-const bench::RecordedRun& todays_run(const std::string& scenario_file) {
-  std::map<std::string, bench::RecordedRun>& runs = todays_runs();
-  auto found = runs.find(scenario_file);
-  if (found == runs.end()) {
-    found = runs.emplace(scenario_file, bench::run_recorded(scenario_file, todays_settings)).first;
-  }
-  return found->second;
-}
-
 /// The converged motion at one step per frame: backward Euler solved by Newton to 1e-4.
 const std::vector<std::string> converged_settings = {
     "simulation.integrator=\"newton\"", "simulation.substeps=1", "simulation.newton.tolerance=1e-4",
     "simulation.newton.max_iterations=100", "simulation.newton.cg_max_iterations=1000"};
 
-std::map<std::string, bench::RecordedRun>& converged_runs() {
-  static std::map<std::string, bench::RecordedRun> runs;
+/// The reference runs, by settings (todays_settings or converged_settings) and scenario file.
+std::map<std::vector<std::string>, std::map<std::string, bench::RecordedRun>>& reference_runs() {
+  static std::map<std::vector<std::string>, std::map<std::string, bench::RecordedRun>> runs;
   return runs;
 }
 
-/// The converged run of each scenario, from its benchmark if it ran first, else run here once.
-const bench::RecordedRun& converged_run(const std::string& scenario_file) {
-  std::map<std::string, bench::RecordedRun>& runs = converged_runs();
+/// The run of `scenario_file` with the reference `settings`, from its benchmark if it ran first,
+/// else run here once and kept.
+const bench::RecordedRun& reference_run(const std::vector<std::string>& settings,
+                                        const std::string& scenario_file) {
+  std::map<std::string, bench::RecordedRun>& runs = reference_runs()[settings];
   auto found = runs.find(scenario_file);
   if (found == runs.end()) {
-    found =
-        runs.emplace(scenario_file, bench::run_recorded(scenario_file, converged_settings)).first;
+    found = runs.emplace(scenario_file, bench::run_recorded(scenario_file, settings)).first;
   }
   return found->second;
 }
@@ -295,9 +281,10 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
     run = bench::run_recorded(scenario_file, overrides);
     state.SetIterationTime(run.wall_s);
   }
-  if (overrides == todays_settings) todays_runs()[scenario_file] = run;  // the others' reference
-  if (overrides == converged_settings) converged_runs()[scenario_file] = run;
-  const bench::RecordedRun& today = todays_run(scenario_file);
+  if (overrides == todays_settings || overrides == converged_settings) {
+    reference_runs()[overrides][scenario_file] = run;  // the others' reference
+  }
+  const bench::RecordedRun& today = reference_run(todays_settings, scenario_file);
   int unconverged = 0;
   for (const FrameStats& row : run.frames) unconverged += row.unconverged_steps;
   const bench::ShapeGap gap = bench::shape_gap(run, today);
@@ -307,7 +294,8 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
   state.counters["max_gap_pct"] = gap.max_pct;
   state.counters["unconverged"] = unconverged;
   if (references_wanted()) {
-    const bench::ShapeGap converged_gap = bench::shape_gap(run, converged_run(scenario_file));
+    const bench::ShapeGap converged_gap =
+        bench::shape_gap(run, reference_run(converged_settings, scenario_file));
     state.counters["converged_gap_mean_pct"] = converged_gap.mean_pct;
     state.counters["converged_gap_max_pct"] = converged_gap.max_pct;
   }
