@@ -301,5 +301,24 @@ TEST(MeshSurface, AParticleDroppedOnAMovedMeshRestsOnTop) {
   EXPECT_NEAR(state.v.norm(), 0.0, 1e-9);
 }
 
+TEST(MeshSurface, ARotatingMeshTurnsItsDistanceField) {
+  // the 2 m cube turns 45 degrees about z through its centre in 1 s: its vertical edge along +x
+  // comes to x = sqrt(2)
+  Obstacle block;
+  block.shape = ObstacleShape::mesh;
+  block.surface = make_mesh_surface(cube());
+  block.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                       {1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, M_PI / 4)}};
+  const Eigen::Vector3d x(1.5, 0.0, 0.0);
+  const SurfaceDistance before = surface_distance(block, x, 0.0);
+  EXPECT_NEAR(before.distance_m, 0.5, 1e-12);
+  const SurfaceDistance after = surface_distance(block, x, 1.0);
+  EXPECT_NEAR(after.distance_m, 1.5 - std::sqrt(2.0), 1e-12);  // to the edge, straight out
+  EXPECT_TRUE(after.normal.isApprox(Eigen::Vector3d::UnitX(), 1e-9)) << after.normal.transpose();
+  // a point that was 0.2 m outside a face is inside the turned cube, 1 - 1.2 / sqrt(2) deep
+  EXPECT_NEAR(surface_distance(block, {1.2, 0.0, 0.0}, 1.0).distance_m, 1.2 / std::sqrt(2.0) - 1.0,
+              1e-12);
+}
+
 }  // namespace
 }  // namespace tissu
