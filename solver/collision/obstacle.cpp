@@ -60,9 +60,14 @@ SurfaceDistance translated_distance(const Obstacle& obstacle, const Eigen::Vecto
 
 SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
                                  double time_s) {
-  if (!obstacle.motion.moves()) return translated_distance(obstacle, x, Eigen::Vector3d::Zero());
-  const RigidPose pose = obstacle.motion.pose(time_s);
-  if (!obstacle.motion.rotates()) return translated_distance(obstacle, x, pose.translation_m);
+  return surface_distance(obstacle, obstacle.motion.pose(time_s), x);
+}
+
+SurfaceDistance surface_distance(const Obstacle& obstacle, const RigidPose& pose,
+                                 const Eigen::Vector3d& x) {
+  if (pose.rotation == Eigen::Matrix3d::Identity()) {
+    return translated_distance(obstacle, x, pose.translation_m);
+  }
   // measured in the obstacle's place at t = 0, the normal turned with it
   SurfaceDistance at_rest =
       translated_distance(obstacle, pose.apply_inverse(x), Eigen::Vector3d::Zero());

@@ -58,4 +58,9 @@ struct Obstacle {
 /// the centre of a box) one of the candidates is returned.
 SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x, double time_s);
 
+/// The same with the obstacle placed by `pose`, obstacle.motion.pose(time_s): for the many
+/// queries of one instant (a step's contacts), which then place it once.
+SurfaceDistance surface_distance(const Obstacle& obstacle, const RigidPose& pose,
+                                 const Eigen::Vector3d& x);
+
 }  // namespace tissu

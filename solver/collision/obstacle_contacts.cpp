@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <vector>
 
 #include "solver/parallel.hpp"
 
@@ -11,15 +12,16 @@ namespace {
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
 /// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
 /// sphere tracing (Hart 1996) along the segment, each advance by the distance to the surface, which
-/// cannot overshoot it. The obstacle is taken where it is at the end of the step.
+/// cannot overshoot it. The obstacle is taken where `pose` places it, at the end of the step.
 std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
                                                      const Eigen::Vector3d& from,
-                                                     const Eigen::Vector3d& to, double time_s) {
+                                                     const Eigen::Vector3d& to,
+                                                     const RigidPose& pose) {
   const double length_m = (to - from).norm();
   // a particle that starts in contact, at the thickness to round-off (where the last step left
   // it) or closer, and ends clear is leaving: the end-position test handles its contacts
   const double start_clearance_m =
-      surface_distance(obstacle, from, time_s).distance_m - obstacle.thickness_m;
+      surface_distance(obstacle, pose, from).distance_m - obstacle.thickness_m;
   if (!(length_m > 0.0) || start_clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
     return std::nullopt;
   }
@@ -27,7 +29,7 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   for (int step = 0; step < 64; ++step) {
     const Eigen::Vector3d here = from + travelled * (to - from);
     const double clearance_m =
-        surface_distance(obstacle, here, time_s).distance_m - obstacle.thickness_m;
+        surface_distance(obstacle, pose, here).distance_m - obstacle.thickness_m;
     if (clearance_m <= 1e-9 * length_m) return here;
     travelled += clearance_m / length_m;
     if (travelled >= 1.0) return std::nullopt;
@@ -35,24 +37,25 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   return from + travelled * (to - from);  // still creeping along the surface: call it a contact
 }
 
-/// One obstacle against one particle that moved from `from` during the step: the outward normal
-/// where they touched, or nothing.
-std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, double h, double time_s,
-                                       const Eigen::Vector3d& from, Eigen::Ref<Eigen::Vector3d> x,
+/// One obstacle, placed by `pose` (at `time_s`, the end of the step), against one particle that
+/// moved from `from` during the step: the outward normal where they touched, or nothing.
+std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const RigidPose& pose, double h,
+                                       double time_s, const Eigen::Vector3d& from,
+                                       Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
-  SurfaceDistance surface = surface_distance(obstacle, x, time_s);
+  SurfaceDistance surface = surface_distance(obstacle, pose, x);
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
   // ending near the far side of a part thinner than the step means it went through
   SurfaceDistance at_start;
   bool crossed = false;
   if (ends_near) {
-    at_start = surface_distance(obstacle, from, time_s);
+    at_start = surface_distance(obstacle, pose, from);
     crossed = at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
   }
   if (!ends_near || crossed) {
-    if (const auto contact = first_contact_on_path(obstacle, from, x, time_s)) {
+    if (const auto contact = first_contact_on_path(obstacle, from, x, pose)) {
       x = *contact;  // where the path first came within the thickness, on its own side
-      surface = surface_distance(obstacle, x, time_s);
+      surface = surface_distance(obstacle, pose, x);
     } else if (!ends_near) {
       return std::nullopt;
     } else {
@@ -91,13 +94,17 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
   const int particles = model.particle_count();
   holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
+  // each obstacle placed once for the step's queries
+  std::vector<RigidPose> poses;
+  for (const Obstacle& obstacle : obstacles) poses.push_back(obstacle.motion.pose(time_s));
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
-    for (const Obstacle& obstacle : obstacles) {
-      if (const auto normal = resolve(obstacle, time_step_s, time_s, start_x.segment<3>(3 * p),
-                                      state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+      if (const auto normal =
+              resolve(obstacles[k], poses[k], time_step_s, time_s, start_x.segment<3>(3 * p),
+                      state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
         holding_normal.col(p) = *normal;
         ++contacts;
       }
