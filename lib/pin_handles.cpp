@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "solver/speed_limit.hpp"
 #include "topology/eigen_conversions.hpp"
 
 namespace tissu {
@@ -14,7 +15,7 @@ bool due(double event_s, double done_until_s, double due_until_s) {
 
 }  // namespace
 
-int PinHandles::before_step(ClothComplex& lcc, CompiledCloth& cloth, double time_step_s) {
+void PinHandles::before_step(ClothComplex& lcc, CompiledCloth& cloth, double time_step_s) {
   const double time_s = cloth.state.time;
   // an event is due at the step whose start is nearest to it; t = 0 events are the initial pins
   const double due_until_s = time_s + 0.5 * time_step_s;
@@ -24,9 +25,9 @@ int PinHandles::before_step(ClothComplex& lcc, CompiledCloth& cloth, double time
     any_due = any_due || due(pin.attach_at_s, done_until_s, due_until_s) ||
               due(pin.release_at_s, done_until_s, due_until_s);
   }
-  int changed = 0;
   if (any_due) {
     edit_and_recompile(lcc, cloth, [&](ClothComplex& complex) {
+      bool changed = false;
       for (auto v = complex.vertex_attributes().begin(); v != complex.vertex_attributes().end();
            ++v) {
         Particle& p = v->info();
@@ -39,9 +40,9 @@ int PinHandles::before_step(ClothComplex& lcc, CompiledCloth& cloth, double time
           p.velocity = to_vector(pin.motion.point_velocity(to_eigen(v->point()), time_s));
         }
         if (release) p.pinned = false;
-        changed += hold != release;
+        changed = changed || hold != release;
       }
-      return changed > 0;
+      return changed;
     });
   }
   m_done_until_s = due_until_s;
@@ -54,18 +55,13 @@ int PinHandles::before_step(ClothComplex& lcc, CompiledCloth& cloth, double time
     const Eigen::Vector3d x = cloth.state.x.segment<3>(3 * p);
     cloth.state.v.segment<3>(3 * p) = (m_pins[group].motion.carry(x, time_s, time_s + h) - x) / h;
   }
-  return changed;
 }
 
 double PinHandles::fastest_speed_m_per_s(const State& state) const {
   double fastest_m_per_s = 0.0;
   for (const PinSelector& pin : m_pins) {
-    double reach_m = 0.0;
-    if (pin.motion.rotates()) {
-      for (Eigen::Index p = 0; 3 * p < state.x.size(); ++p) {
-        reach_m = std::max(reach_m, (state.x.segment<3>(3 * p) - pin.motion.pivot_m).norm());
-      }
-    }
+    const double reach_m =
+        pin.motion.rotates() ? farthest_particle_m(state, pin.motion.pivot_m) : 0.0;
     fastest_m_per_s = std::max(fastest_m_per_s, pin.motion.fastest_speed_m_per_s(reach_m));
   }
   return fastest_m_per_s;

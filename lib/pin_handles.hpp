@@ -24,8 +24,8 @@ class PinHandles {
   /// handle whose release_at_s is due (they keep their velocity), takes hold of those whose
   /// attach_at_s is due (they take the handle's velocity) — due at the step starting nearest to
   /// the time — recompiling the cloth when either happened, then sets the keyframed handles'
-  /// velocities. Returns how many particles were let go or taken.
-  int before_step(ClothComplex& lcc, CompiledCloth& cloth, double time_step_s);
+  /// velocities.
+  void before_step(ClothComplex& lcc, CompiledCloth& cloth, double time_step_s);
 
   /// An upper bound on how fast a handle moves its particles (m/s), for the run's speed limit:
   /// a rotating handle's particles as far from its pivot as the farthest particle of `state`.

@@ -31,16 +31,15 @@ double obstacle_reach_m(const Obstacle& obstacle, double cloth_reach_m) {
   return cloth_reach_m;
 }
 
-/// Farthest particle from `point` at the start (m).
-double cloth_reach_m(const State& state, const Eigen::Vector3d& point) {
+}  // namespace
+
+double farthest_particle_m(const State& state, const Eigen::Vector3d& point) {
   double reach_m = 0.0;
   for (Eigen::Index p = 0; 3 * p < state.x.size(); ++p) {
     reach_m = std::max(reach_m, (state.x.segment<3>(3 * p) - point).norm());
   }
   return reach_m;
 }
-
-}  // namespace
 
 SpeedLimit speed_limit_at_start(const SpringModel& model, const SolverParams& params,
                                 const State& state) {
@@ -53,7 +52,8 @@ SpeedLimit speed_limit_at_start(const SpringModel& model, const SolverParams& pa
   for (const Obstacle& obstacle : params.obstacles) {
     const RigidMotion& motion = obstacle.motion;
     const double reach_m =
-        motion.rotates() ? obstacle_reach_m(obstacle, cloth_reach_m(state, motion.pivot_m)) : 0.0;
+        motion.rotates() ? obstacle_reach_m(obstacle, farthest_particle_m(state, motion.pivot_m))
+                         : 0.0;
     limit.obstacle_speed_m_per_s =
         std::max(limit.obstacle_speed_m_per_s, motion.fastest_speed_m_per_s(reach_m));
   }

@@ -44,6 +44,10 @@ struct SpeedLimit {
 SpeedLimit speed_limit_at_start(const SpringModel& model, const SolverParams& params,
                                 const State& state);
 
+/// Distance from `point` to the farthest particle of `state` (m): how far a rotation about
+/// `point` can reach the cloth.
+double farthest_particle_m(const State& state, const Eigen::Vector3d& point);
+
 /// max over springs s of |l_s - l0_s| sqrt(k_s / min(m_i, m_j)) in `state` (m/s); 0 without
 /// springs.
 double spring_release_speed_m_per_s(const SpringModel& model, const State& state);
