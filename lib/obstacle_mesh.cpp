@@ -90,8 +90,9 @@ IndexedMesh box_mesh(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_
   return mesh;
 }
 
-/// The obstacle's surface at t = 0.
-IndexedMesh mesh_at_start(const Obstacle& obstacle) {
+/// The obstacle's surface before its rigid motion moves it: its place at t = 0, an animated
+/// mesh's shape at `time_s`.
+IndexedMesh unmoved_mesh(const Obstacle& obstacle, double time_s) {
   const Eigen::Vector3d& position = obstacle.position;
   switch (obstacle.shape) {
     case ObstacleShape::plane:
@@ -104,7 +105,8 @@ IndexedMesh mesh_at_start(const Obstacle& obstacle) {
       return box_mesh(position, obstacle.half_extents_m, obstacle.rotation);
     case ObstacleShape::mesh: {
       IndexedMesh mesh;
-      mesh.vertices = obstacle.surface->triangle_corners();
+      mesh.vertices = obstacle.animation ? obstacle.animation->at(time_s)->triangle_corners()
+                                         : obstacle.surface->triangle_corners();
       for (int t = 0; 3 * t < static_cast<int>(mesh.vertices.size()); ++t) {
         mesh.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
       }
@@ -117,7 +119,7 @@ IndexedMesh mesh_at_start(const Obstacle& obstacle) {
 }  // namespace
 
 IndexedMesh obstacle_mesh(const Obstacle& obstacle, double time_s) {
-  IndexedMesh mesh = mesh_at_start(obstacle);
+  IndexedMesh mesh = unmoved_mesh(obstacle, time_s);
   const RigidPose pose = obstacle.motion.pose(time_s);
   for (Eigen::Vector3d& vertex : mesh.vertices) vertex = pose.apply(vertex);
   return mesh;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Triangle meshes of the scenario's rigid obstacles, for drawing them. CGAL-free.
+/// Triangle meshes of the scenario's obstacles, for drawing them. CGAL-free.
 
 #include <optional>
 #include <vector>
@@ -17,7 +17,7 @@ inline constexpr int obstacle_mesh_segments = 64;
 
 /// A closed triangle mesh of `obstacle`'s surface where it is at `time_s` (its place at t = 0
 /// moved by motion.pose(time_s)), faces counter-clockwise seen from outside, every vertex on the
-/// surface:
+/// surface (a mesh obstacle: its triangles, an animated one's at `time_s`):
 /// - sphere: a UV sphere of `obstacle_mesh_segments` meridians and poles at +-z;
 /// - capsule: a cylinder around the axis capped by two such hemispheres;
 /// - box: 8 corners, 12 triangles, rotated by `rotation`.

@@ -1,7 +1,10 @@
 #include "lib/point_cache.hpp"
 
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +22,15 @@ void put(std::string& bytes, T value) {
 }
 
 constexpr long long samples_offset = 28;  ///< of the header's int32 sample count (bytes)
+constexpr std::size_t header_bytes = 32;
+
+/// The `T` stored little-endian at `offset` of `bytes`.
+template <class T>
+T get(const std::string& bytes, std::size_t offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof(T));
+  return value;
+}
 
 }  // namespace
 
@@ -47,6 +59,56 @@ void PointCacheFile::append(const Eigen::VectorXd& x) {
   put<std::int32_t>(count, m_samples + 1);
   m_file.overwrite(samples_offset, count);
   ++m_samples;
+}
+
+PointCache read_point_cache(const std::filesystem::path& file) {
+  const auto fail = [&](const std::string& what) {
+    return PointCacheError("point cache " + file.string() + ": " + what);
+  };
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw fail("cannot be opened");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < header_bytes || bytes.compare(0, 12, std::string("POINTCACHE2", 12)) != 0) {
+    throw fail("not a PC2 file: expected a 32-byte header starting \"POINTCACHE2\"");
+  }
+  const auto version = get<std::int32_t>(bytes, 12);
+  if (version != 1) throw fail("version " + std::to_string(version) + "; expected 1");
+  const auto points = get<std::int32_t>(bytes, 16);
+  const auto samples = get<std::int32_t>(bytes, samples_offset);
+  if (points <= 0 || samples <= 0) {
+    throw fail(std::to_string(points) + " points and " + std::to_string(samples) +
+               " samples; expected at least one of each");
+  }
+  PointCache cache;
+  cache.start_frame = get<float>(bytes, 20);
+  cache.sample_rate = get<float>(bytes, 24);
+  if (!std::isfinite(cache.start_frame) || !(cache.sample_rate > 0.0) ||
+      !std::isfinite(cache.sample_rate)) {
+    throw fail("start frame " + std::to_string(cache.start_frame) + ", sample rate " +
+               std::to_string(cache.sample_rate) +
+               "; expected a finite start and a positive, finite sample rate");
+  }
+  const std::size_t sample_bytes = std::size_t{12} * static_cast<std::size_t>(points);
+  const std::size_t needed = header_bytes + sample_bytes * static_cast<std::size_t>(samples);
+  if (bytes.size() < needed) {
+    throw fail("its header counts " + std::to_string(samples) + " samples of " +
+               std::to_string(points) + " points (" + std::to_string(needed) +
+               " bytes), but the file has " + std::to_string(bytes.size()) + " bytes");
+  }
+  cache.samples.resize(samples);
+  for (std::int32_t k = 0; k < samples; ++k) {
+    std::vector<Eigen::Vector3d>& sample = cache.samples[k];
+    sample.resize(points);
+    for (std::int32_t p = 0; p < points; ++p) {
+      const std::size_t at = header_bytes + k * sample_bytes + std::size_t{12} * p;
+      sample[p] = {get<float>(bytes, at), get<float>(bytes, at + 4), get<float>(bytes, at + 8)};
+      if (!sample[p].allFinite()) {
+        throw fail("sample " + std::to_string(k) + ", point " + std::to_string(p) +
+                   ": a non-finite coordinate");
+      }
+    }
+  }
+  return cache;
 }
 
 }  // namespace tissu

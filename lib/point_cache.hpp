@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// A PC2 point cache of the cloth's positions, frame by frame, for animation tools: Blender's Mesh
-/// Cache modifier, Houdini and Maya play it on the frame-0 mesh, whose vertex k is particle k.
-/// Only for a cloth whose particles stay the same through the run (no refinement, no tearing).
+/// PC2 point caches. tissu writes the cloth's positions, frame by frame, for animation tools:
+/// Blender's Mesh Cache modifier, Houdini and Maya play it on the frame-0 mesh, whose vertex k is
+/// particle k; only for a cloth whose particles stay the same through the run (no refinement, no
+/// tearing). tissu reads an animated obstacle's (a body's) vertex positions from one.
 /// The format (Blender's io_pc2 and MeshCache modifier, little-endian): a 32-byte header
 ///   char signature[12] = "POINTCACHE2\0"; int32 version = 1; int32 points;
 ///   float32 start_frame; float32 sample_rate (frames between samples); int32 samples;
@@ -10,6 +11,8 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <stdexcept>
+#include <vector>
 
 #include "lib/atomic_file.hpp"
 
@@ -31,5 +34,25 @@ class PointCacheFile {
   int m_points;
   int m_samples = 0;
 };
+
+/// A PC2 file that cannot be read; the message names the file and what is wrong.
+class PointCacheError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What a PC2 file holds.
+struct PointCache {
+  double start_frame = 0.0;
+  double sample_rate = 1.0;  ///< frames between samples
+  std::vector<std::vector<Eigen::Vector3d>> samples;  ///< per sample, `points` positions (m)
+};
+
+/// Reads `file`, written by PointCacheFile or by another tool (Blender's exporter). Bytes after the
+/// header's sample count are ignored (a cache still being written). Throws PointCacheError, naming
+/// the file, when it cannot be opened, has no "POINTCACHE2" header of version 1, no point or no
+/// sample, a sample rate that is not positive and finite, fewer bytes than its header counts, or
+/// a non-finite coordinate (naming the sample and the point, from 0).
+PointCache read_point_cache(const std::filesystem::path& file);
 
 }  // namespace tissu

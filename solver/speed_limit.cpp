@@ -54,8 +54,10 @@ SpeedLimit speed_limit_at_start(const SpringModel& model, const SolverParams& pa
     const double reach_m =
         motion.rotates() ? obstacle_reach_m(obstacle, farthest_particle_m(state, motion.pivot_m))
                          : 0.0;
-    limit.obstacle_speed_m_per_s =
-        std::max(limit.obstacle_speed_m_per_s, motion.fastest_speed_m_per_s(reach_m));
+    const double deforming_m_per_s =
+        obstacle.animation ? obstacle.animation->fastest_speed_m_per_s() : 0.0;
+    limit.obstacle_speed_m_per_s = std::max(
+        limit.obstacle_speed_m_per_s, motion.fastest_speed_m_per_s(reach_m) + deforming_m_per_s);
   }
   const Wind& wind = params.environment.wind;
   limit.wind_speed_m_per_s = wind.velocity.norm() * (1.0 + std::abs(wind.gust_amplitude));

@@ -7,7 +7,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <deque>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -103,16 +106,30 @@ bool is_closed(const ObstacleTriangles& triangles) {
                      [](const auto& edge) { return edge.second == 0; });
 }
 
+/// Barycentric coordinates of `p`, a point of triangle abc, from the areas of its sub-triangles
+/// (Ericson 2005, "Real-Time Collision Detection", 3.4); a triangle of no area gives its first
+/// corner.
+Eigen::Vector3d barycentric_of(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                               const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d00 = ab.dot(ab), d01 = ab.dot(ac), d11 = ac.dot(ac);
+  const double d20 = ap.dot(ab), d21 = ap.dot(ac);
+  const double det = d00 * d11 - d01 * d01;
+  if (!(det > 0.0)) return Eigen::Vector3d::UnitX();
+  const double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
+  return {1.0 - v - w, v, w};
+}
+
 class MeshSurface final : public SurfaceQuery {
  public:
   MeshSurface(const MeshSurface&) = delete;  // the tree points into m_triangles
   MeshSurface& operator=(const MeshSurface&) = delete;
-  MeshSurface(const IndexedMesh& mesh, const std::vector<std::array<int, 3>>& triangles,
-              bool closed) {
+  MeshSurface(const std::vector<Eigen::Vector3d>& vertices,
+              const std::vector<std::array<int, 3>>& triangles, bool closed) {
     for (const std::array<int, 3>& t : triangles) {
-      for (int v : t) m_corners.push_back(mesh.vertices[v]);
-      m_triangles.emplace_back(to_point(mesh.vertices[t[0]]), to_point(mesh.vertices[t[1]]),
-                               to_point(mesh.vertices[t[2]]));
+      for (int v : t) m_corners.push_back(vertices[v]);
+      m_triangles.emplace_back(to_point(vertices[t[0]]), to_point(vertices[t[1]]),
+                               to_point(vertices[t[2]]));
     }
     if (closed) m_winding.emplace(m_corners);
     m_tree.insert(m_triangles.begin(), m_triangles.end());
@@ -121,17 +138,20 @@ class MeshSurface final : public SurfaceQuery {
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
     const auto [closest, triangle] = m_tree.closest_point_and_primitive(to_point(x_m));
-    const Eigen::Vector3d offset = x_m - to_eigen(closest);
+    const int index = static_cast<int>(triangle - m_triangles.cbegin());
+    const Eigen::Vector3d nearest = to_eigen(closest);
+    const Eigen::Vector3d& a = m_corners[3 * index];
+    const Eigen::Vector3d& b = m_corners[3 * index + 1];
+    const Eigen::Vector3d& c = m_corners[3 * index + 2];
+    const Eigen::Vector3d barycentric = barycentric_of(nearest, a, b, c);
+    const Eigen::Vector3d offset = x_m - nearest;
     const double gap_m = offset.norm();
-    if (!(gap_m > 1e-12)) {
-      const Eigen::Vector3d a = to_eigen(triangle->vertex(0));
-      const Eigen::Vector3d face_normal =
-          (to_eigen(triangle->vertex(1)) - a).cross(to_eigen(triangle->vertex(2)) - a).normalized();
-      return {0.0, face_normal};
-    }
+    if (!(gap_m > 1e-12)) return {0.0, (b - a).cross(c - a).normalized(), index, barycentric};
     const Eigen::Vector3d away = offset / gap_m;
-    if (m_winding && m_winding->winding_number(x_m) > 0.5) return {-gap_m, -away};  // inside
-    return {gap_m, away};
+    if (m_winding && m_winding->winding_number(x_m) > 0.5) {
+      return {-gap_m, -away, index, barycentric};  // inside
+    }
+    return {gap_m, away, index, barycentric};
   }
 
   const std::vector<Eigen::Vector3d>& triangle_corners() const override { return m_corners; }
@@ -143,6 +163,97 @@ class MeshSurface final : public SurfaceQuery {
   Tree m_tree;
 };
 
+/// Checks `samples` against `vertex_count` vertices and `triangles`, as make_mesh_animation says.
+void check_samples(const MeshSamples& samples, std::size_t vertex_count,
+                   const std::vector<std::array<int, 3>>& triangles) {
+  const std::size_t count = samples.times_s.size();
+  if (count == 0) throw MeshError("the animation has no samples");
+  if (samples.vertices_m.size() != count) {
+    throw MeshError("the animation has " + std::to_string(count) + " times but " +
+                    std::to_string(samples.vertices_m.size()) + " samples");
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::string sample = "sample " + std::to_string(k);
+    const double t = samples.times_s[k];
+    if (!std::isfinite(t) || (k > 0 && !(t > samples.times_s[k - 1]))) {
+      throw MeshError(sample + ": time " + std::to_string(t) +
+                      " s; expected a finite time after the previous sample's");
+    }
+    const std::vector<Eigen::Vector3d>& x = samples.vertices_m[k];
+    if (x.size() != vertex_count) {
+      throw MeshError(sample + " has " + std::to_string(x.size()) + " vertices; the mesh has " +
+                      std::to_string(vertex_count));
+    }
+    for (std::size_t v = 0; v < x.size(); ++v) {
+      if (!x[v].allFinite()) {
+        throw MeshError(sample + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+      }
+    }
+    for (const std::array<int, 3>& t3 : triangles) {
+      if ((x[t3[1]] - x[t3[0]]).cross(x[t3[2]] - x[t3[0]]).squaredNorm() == 0.0) {
+        throw MeshError(sample + ": the triangle of vertices " + std::to_string(t3[0]) + ", " +
+                        std::to_string(t3[1]) + ", " + std::to_string(t3[2]) +
+                        " has no area there (it has some in sample 0)");
+      }
+    }
+  }
+}
+
+class MeshAnimation final : public SurfaceAnimation {
+ public:
+  MeshAnimation(MeshSamples samples, std::vector<std::array<int, 3>> triangles, bool closed)
+      : m_samples(std::move(samples)), m_triangles(std::move(triangles)), m_closed(closed) {
+    for (std::size_t k = 1; k < m_samples.times_s.size(); ++k) {
+      const double duration_s = m_samples.times_s[k] - m_samples.times_s[k - 1];
+      for (std::size_t v = 0; v < m_samples.vertices_m[k].size(); ++v) {
+        const double moved_m = (m_samples.vertices_m[k][v] - m_samples.vertices_m[k - 1][v]).norm();
+        m_fastest_m_per_s = std::max(m_fastest_m_per_s, moved_m / duration_s);
+      }
+    }
+  }
+
+  std::shared_ptr<const SurfaceQuery> at(double time_s) const override {
+    const std::vector<double>& times = m_samples.times_s;
+    const double t = std::clamp(time_s, times.front(), times.back());
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    for (const auto& [built_s, surface] : m_built) {
+      if (std::abs(built_s - t) <= same_instant_s) return surface;
+    }
+    auto surface = std::make_shared<const MeshSurface>(vertices_at(t), m_triangles, m_closed);
+    m_built.emplace_back(t, surface);
+    if (m_built.size() > kept_surfaces) m_built.pop_front();
+    return surface;
+  }
+
+  double fastest_speed_m_per_s() const override { return m_fastest_m_per_s; }
+
+ private:
+  static constexpr double same_instant_s = 1e-9;
+  static constexpr std::size_t kept_surfaces = 4;
+
+  /// The vertices at t, within the samples' times: linear between the two samples around it.
+  std::vector<Eigen::Vector3d> vertices_at(double t) const {
+    const std::vector<double>& times = m_samples.times_s;
+    const std::size_t after = std::upper_bound(times.begin(), times.end(), t) - times.begin();
+    if (after == 0 || after == times.size()) {
+      return m_samples.vertices_m[after == 0 ? 0 : times.size() - 1];
+    }
+    const double s = (t - times[after - 1]) / (times[after] - times[after - 1]);
+    const std::vector<Eigen::Vector3d>& a = m_samples.vertices_m[after - 1];
+    const std::vector<Eigen::Vector3d>& b = m_samples.vertices_m[after];
+    std::vector<Eigen::Vector3d> x(a.size());
+    for (std::size_t v = 0; v < x.size(); ++v) x[v] = (1.0 - s) * a[v] + s * b[v];
+    return x;
+  }
+
+  MeshSamples m_samples;
+  std::vector<std::array<int, 3>> m_triangles;
+  bool m_closed;
+  double m_fastest_m_per_s = 0.0;
+  mutable std::mutex m_mutex;  // guards m_built
+  mutable std::deque<std::pair<double, std::shared_ptr<const SurfaceQuery>>> m_built;
+};
+
 }  // namespace
 
 std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
@@ -152,7 +263,26 @@ std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
   r = {};
   const ObstacleTriangles triangles = obstacle_triangles(mesh, r);
   r.closed = is_closed(triangles);
-  return std::make_shared<MeshSurface>(mesh, triangles.kept, r.closed);
+  return std::make_shared<MeshSurface>(mesh.vertices, triangles.kept, r.closed);
+}
+
+std::shared_ptr<const SurfaceAnimation> make_mesh_animation(const IndexedMesh& mesh,
+                                                            MeshSamples samples,
+                                                            ObstacleMeshReport* report) {
+  if (samples.vertices_m.empty()) throw MeshError("the animation has no samples");
+  if (samples.vertices_m.front().size() != mesh.vertices.size()) {
+    throw MeshError("sample 0 has " + std::to_string(samples.vertices_m.front().size()) +
+                    " vertices; the mesh has " + std::to_string(mesh.vertices.size()));
+  }
+  IndexedMesh first = mesh;
+  first.vertices = samples.vertices_m.front();
+  ObstacleMeshReport local;
+  ObstacleMeshReport& r = report ? *report : local;
+  r = {};
+  const ObstacleTriangles triangles = obstacle_triangles(first, r);
+  r.closed = is_closed(triangles);
+  check_samples(samples, mesh.vertices.size(), triangles.kept);
+  return std::make_shared<MeshAnimation>(std::move(samples), triangles.kept, r.closed);
 }
 
 }  // namespace tissu

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// A triangle mesh as an obstacle's surface: distances through CGAL's AABB tree, inside and
-/// outside by the generalised winding number.
+/// A triangle mesh as an obstacle's surface, fixed or animated: distances through CGAL's AABB
+/// tree, inside and outside by the generalised winding number.
 
 #include <memory>
+#include <vector>
 
 #include "solver/collision/obstacle.hpp"
 #include "topology/indexed_mesh.hpp"
@@ -34,5 +35,25 @@ struct ObstacleMeshReport {
 /// of range, a non-finite coordinate, a face of fewer than 3 vertices, or only degenerate faces.
 std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
                                                       ObstacleMeshReport* report = nullptr);
+
+/// A mesh's vertex positions at increasing times: an animation (a body's point cache, a sequence
+/// of meshes of the same connectivity).
+struct MeshSamples {
+  std::vector<double> times_s;
+  std::vector<std::vector<Eigen::Vector3d>> vertices_m;  ///< per sample, one per mesh vertex
+};
+
+/// An animated obstacle mesh: `mesh`'s faces, checked and cleaned as make_mesh_surface does (with
+/// the first sample's positions, which replace `mesh`'s), their corners at `samples`' positions,
+/// interpolated linearly in time between samples and held before the first and after the last.
+/// Its surface at an instant is built (an AABB tree and, closed, a winding-number tree) when first
+/// asked for, and the last few are kept: a run asks for each step's end twice (as the next step's
+/// start), and instants within 1e-9 s count as one. Throws MeshError naming the sample (from 0)
+/// and the element: no sample, a time not finite or not after the one before, a sample whose
+/// vertex count differs from the mesh's or with a non-finite coordinate, a kept triangle of no area
+/// in some sample, or anything make_mesh_surface refuses.
+std::shared_ptr<const SurfaceAnimation> make_mesh_animation(const IndexedMesh& mesh,
+                                                            MeshSamples samples,
+                                                            ObstacleMeshReport* report = nullptr);
 
 }  // namespace tissu

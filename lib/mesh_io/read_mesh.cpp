@@ -367,9 +367,14 @@ IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits&
 }
 
 IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits) {
-  IndexedMesh mesh = import_numbered(file, limits).mesh;
-  mesh.face_uvs.clear();  // obstacles have no use for them, on some faces or all
-  return mesh;
+  return read_numbered_polygons(file, limits).mesh;
+}
+
+NumberedMesh read_numbered_polygons(const std::filesystem::path& file,
+                                    const MeshImportLimits& limits) {
+  NumberedMesh out = import_numbered(file, limits);
+  out.mesh.face_uvs.clear();  // obstacles have no use for them, on some faces or all
+  return out;
 }
 
 }  // namespace tissu

@@ -82,4 +82,9 @@ IndexedMesh read_mesh(const std::filesystem::path& file, const MeshImportLimits&
 /// with the file path when the file cannot be read or the importer fails.
 IndexedMesh read_polygons(const std::filesystem::path& file, const MeshImportLimits& limits = {});
 
+/// read_polygons, with the file's vertex numbering (for an animated obstacle, whose point cache
+/// or keyframe files give positions per file vertex).
+NumberedMesh read_numbered_polygons(const std::filesystem::path& file,
+                                    const MeshImportLimits& limits = {});
+
 }  // namespace tissu

@@ -1,49 +1,15 @@
 #include "lib/scenario/read_collisions.hpp"
 
 #include <Eigen/Geometry>
-#include <filesystem>
 #include <limits>
 #include <string>
 
-#include "lib/mesh_io/read_mesh.hpp"
+#include "lib/scenario/read_mesh_obstacle.hpp"
 #include "lib/scenario/read_motion.hpp"
 #include "lib/scenario/scenario_limits.hpp"
-#include "topology/mesh_obstacle.hpp"
 
 namespace tissu {
 namespace {
-
-/// A mesh file (relative to the scenario's folder), scaled about its origin, rotated about it,
-/// then moved by "position", as a distance field. Faces the surface dropped are noted.
-std::shared_ptr<const SurfaceQuery> read_mesh_surface(JsonObjectReader& o,
-                                                      std::vector<std::string>& notes) {
-  const std::filesystem::path given = o.string("file");
-  if (given.empty()) o.fail("file", "the path of a mesh file, not an empty string");
-  const std::filesystem::path file =
-      given.is_absolute() ? given : std::filesystem::path(o.file()).parent_path() / given;
-  o.resolve("file", std::filesystem::absolute(file).string());  // runs from any folder
-  const double scale =
-      o.number_or("scale", 1.0, between(min_obstacle_scale, max_obstacle_scale, ""));
-  const Eigen::Matrix3d rotation = o.has("rotation")
-                                       ? rotation_of(read_rotation_vector(o.object("rotation")))
-                                       : Eigen::Matrix3d::Identity();
-  const Eigen::Vector3d position = o.vector3_or("position", Eigen::Vector3d::Zero());
-  try {
-    IndexedMesh mesh = read_polygons(file);
-    for (Eigen::Vector3d& x : mesh.vertices) x = rotation * (scale * x) + position;
-    ObstacleMeshReport report;
-    auto surface = make_mesh_surface(mesh, &report);
-    if (report.duplicate_faces > 0 || report.degenerate_faces > 0) {
-      notes.push_back(o.file() + ": " + o.key_path("file") + ": " + file.string() + ": dropped " +
-                      std::to_string(report.duplicate_faces) + " duplicate and " +
-                      std::to_string(report.degenerate_faces) + " degenerate faces, kept " +
-                      std::to_string(report.triangles) + " triangles");
-    }
-    return surface;
-  } catch (const MeshError& e) {
-    throw ScenarioError(o.file() + ": " + o.key_path("file") + ": " + e.what());
-  }
-}
 
 /// Where an obstacle's rotations turn about unless its motion says: its centre (a sphere's or a
 /// box's), the first end of a capsule's axis, a plane's point, the mean of a mesh's corners.
@@ -73,7 +39,7 @@ Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
     ob.radius_m = o.number("radius", positive(" (m)"));
   } else if (type == "mesh") {
     ob.shape = ObstacleShape::mesh;
-    ob.surface = read_mesh_surface(o, notes);
+    read_mesh_obstacle(o, ob, notes);
   } else {
     ob.shape = ObstacleShape::box;
     ob.position = o.vector3("center");

@@ -33,9 +33,10 @@ SurfaceDistance box_distance(const Obstacle& box, const Eigen::Vector3d& centre,
   return {depth, box.rotation * local};
 }
 
-/// The distance to `obstacle` translated by `offset` (m) from its place at t = 0.
-SurfaceDistance translated_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
-                                    const Eigen::Vector3d& offset) {
+/// The distance to `obstacle` translated by `offset` (m) from its place at t = 0; a mesh's surface
+/// is `surface`.
+SurfaceDistance translated_distance(const Obstacle& obstacle, const SurfaceQuery* surface,
+                                    const Eigen::Vector3d& x, const Eigen::Vector3d& offset) {
   const Eigen::Vector3d position = obstacle.position + offset;
   switch (obstacle.shape) {
     case ObstacleShape::plane:
@@ -51,28 +52,68 @@ SurfaceDistance translated_distance(const Obstacle& obstacle, const Eigen::Vecto
     case ObstacleShape::box:
       return box_distance(obstacle, position, x);
     case ObstacleShape::mesh:
-      return obstacle.surface->distance(x - offset);
+      return surface->distance(x - offset);
   }
   return {};
 }
 
 }  // namespace
 
-SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
-                                 double time_s) {
-  return surface_distance(obstacle, obstacle.motion.pose(time_s), x);
+Eigen::Vector3d point_on(const SurfaceQuery& surface, int triangle,
+                         const Eigen::Vector3d& barycentric) {
+  const std::vector<Eigen::Vector3d>& corners = surface.triangle_corners();
+  return barycentric[0] * corners[3 * triangle] + barycentric[1] * corners[3 * triangle + 1] +
+         barycentric[2] * corners[3 * triangle + 2];
 }
 
-SurfaceDistance surface_distance(const Obstacle& obstacle, const RigidPose& pose,
+ObstaclePlacement place(const Obstacle& obstacle, double time_s) {
+  return {obstacle.motion.pose(time_s),
+          obstacle.animation ? obstacle.animation->at(time_s) : obstacle.surface};
+}
+
+SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d& x,
+                                 double time_s) {
+  return surface_distance(obstacle, place(obstacle, time_s), x);
+}
+
+SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlacement& placement,
                                  const Eigen::Vector3d& x) {
+  const RigidPose& pose = placement.pose;
+  const SurfaceQuery* surface = placement.surface.get();
   if (pose.rotation == Eigen::Matrix3d::Identity()) {
-    return translated_distance(obstacle, x, pose.translation_m);
+    return translated_distance(obstacle, surface, x, pose.translation_m);
   }
   // measured in the obstacle's place at t = 0, the normal turned with it
   SurfaceDistance at_rest =
-      translated_distance(obstacle, pose.apply_inverse(x), Eigen::Vector3d::Zero());
+      translated_distance(obstacle, surface, pose.apply_inverse(x), Eigen::Vector3d::Zero());
   at_rest.normal = pose.rotation * at_rest.normal;
   return at_rest;
+}
+
+Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlacement& before,
+                                   const ObstaclePlacement& after, const Eigen::Vector3d& x) {
+  Eigen::Vector3d local = before.pose.apply_inverse(x);  // in the obstacle's own frame
+  if (obstacle.animation) {
+    const SurfaceDistance nearest = before.surface->distance(local);
+    if (nearest.triangle >= 0) {
+      local += point_on(*after.surface, nearest.triangle, nearest.barycentric) -
+               point_on(*before.surface, nearest.triangle, nearest.barycentric);
+    }
+  }
+  return after.pose.apply(local);
+}
+
+Eigen::Vector3d surface_velocity(const Obstacle& obstacle, const ObstaclePlacement& before,
+                                 const ObstaclePlacement& after, const SurfaceDistance& nearest,
+                                 const Eigen::Vector3d& x, double time_s, double duration_s) {
+  Eigen::Vector3d velocity = obstacle.motion.point_velocity(x, time_s);
+  if (obstacle.animation && nearest.triangle >= 0) {
+    const Eigen::Vector3d moved_m =
+        point_on(*after.surface, nearest.triangle, nearest.barycentric) -
+        point_on(*before.surface, nearest.triangle, nearest.barycentric);
+    velocity += after.pose.rotation * moved_m / duration_s;
+  }
+  return velocity;
 }
 
 }  // namespace tissu

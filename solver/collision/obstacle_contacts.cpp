@@ -12,16 +12,16 @@ namespace {
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
 /// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
 /// sphere tracing (Hart 1996) along the segment, each advance by the distance to the surface, which
-/// cannot overshoot it. The obstacle is taken where `pose` places it, at the end of the step.
+/// cannot overshoot it. The obstacle is taken where `placement` puts it, at the end of the step.
 std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
                                                      const Eigen::Vector3d& from,
                                                      const Eigen::Vector3d& to,
-                                                     const RigidPose& pose) {
+                                                     const ObstaclePlacement& placement) {
   const double length_m = (to - from).norm();
   // a particle that starts in contact, at the thickness to round-off (where the last step left
   // it) or closer, and ends clear is leaving: the end-position test handles its contacts
   const double start_clearance_m =
-      surface_distance(obstacle, pose, from).distance_m - obstacle.thickness_m;
+      surface_distance(obstacle, placement, from).distance_m - obstacle.thickness_m;
   if (!(length_m > 0.0) || start_clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
     return std::nullopt;
   }
@@ -29,7 +29,7 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   for (int step = 0; step < 64; ++step) {
     const Eigen::Vector3d here = from + travelled * (to - from);
     const double clearance_m =
-        surface_distance(obstacle, pose, here).distance_m - obstacle.thickness_m;
+        surface_distance(obstacle, placement, here).distance_m - obstacle.thickness_m;
     if (clearance_m <= 1e-9 * length_m) return here;
     travelled += clearance_m / length_m;
     if (travelled >= 1.0) return std::nullopt;
@@ -37,37 +37,43 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   return from + travelled * (to - from);  // still creeping along the surface: call it a contact
 }
 
-/// One obstacle, placed by `pose` (at `time_s`, the end of the step), against one particle that
-/// moved from `from` during the step: the outward normal where they touched, or nothing.
-std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const RigidPose& pose, double h,
-                                       double time_s, const Eigen::Vector3d& from,
-                                       Eigen::Ref<Eigen::Vector3d> x,
+/// One obstacle, at `before` and `after` at the start and the end (`time_s`) of the step, against
+/// one particle that moved from `start` during the step: the outward normal where they touched, or
+/// nothing. The particle's path is measured relative to the obstacle, from where `start` would be
+/// at the end of the step had it moved with the obstacle's surface.
+std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstaclePlacement& before,
+                                       const ObstaclePlacement& after, double h, double time_s,
+                                       const Eigen::Vector3d& start, Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
-  SurfaceDistance surface = surface_distance(obstacle, pose, x);
+  const bool moves = obstacle.motion.moves() || obstacle.animation;
+  const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
+  SurfaceDistance surface = surface_distance(obstacle, after, x);
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
   // ending near the far side of a part thinner than the step means it went through
   SurfaceDistance at_start;
   bool crossed = false;
   if (ends_near) {
-    at_start = surface_distance(obstacle, pose, from);
+    at_start = surface_distance(obstacle, after, from);
     crossed = at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
   }
   if (!ends_near || crossed) {
-    if (const auto contact = first_contact_on_path(obstacle, from, x, pose)) {
+    if (const auto contact = first_contact_on_path(obstacle, from, x, after)) {
       x = *contact;  // where the path first came within the thickness, on its own side
-      surface = surface_distance(obstacle, pose, x);
+      surface = surface_distance(obstacle, after, x);
     } else if (!ends_near) {
       return std::nullopt;
     } else {
       // it started touching: measure it on the side it started from
-      surface = {at_start.distance_m + (x - from).dot(at_start.normal), at_start.normal};
+      surface = at_start;
+      surface.distance_m += (x - from).dot(at_start.normal);
     }
   }
   const Eigen::Vector3d& n = surface.normal;
   const double pushed_m = std::max(0.0, obstacle.thickness_m - surface.distance_m);
   x += pushed_m * n;
 
-  const Eigen::Vector3d v_obstacle = obstacle.motion.point_velocity(x, time_s);
+  const Eigen::Vector3d v_obstacle =
+      surface_velocity(obstacle, before, after, surface, x, time_s, h);
   const Eigen::Vector3d relative = v - v_obstacle;
   const double v_n = relative.dot(n);
   // the normal impulse per unit mass: the approach it stops, or the push out of the surface over
@@ -94,16 +100,19 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
   const int particles = model.particle_count();
   holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
-  // each obstacle placed once for the step's queries
-  std::vector<RigidPose> poses;
-  for (const Obstacle& obstacle : obstacles) poses.push_back(obstacle.motion.pose(time_s));
+  // each obstacle placed once at each end of the step for the step's queries
+  std::vector<ObstaclePlacement> before, after;
+  for (const Obstacle& obstacle : obstacles) {
+    before.push_back(place(obstacle, time_s - time_step_s));
+    after.push_back(place(obstacle, time_s));
+  }
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       if (const auto normal =
-              resolve(obstacles[k], poses[k], time_step_s, time_s, start_x.segment<3>(3 * p),
+              resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start_x.segment<3>(3 * p),
                       state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
         holding_normal.col(p) = *normal;
         ++contacts;

@@ -22,10 +22,14 @@ namespace tissu {
 ///   the change of v_t, so that x_{n+1} - x_n = h v_{n+1} holds along the surface as it does in the
 ///   integrator. A particle on a slope of angle a then sticks when tan a <= mu_s and otherwise
 ///   accelerates at g (sin a - mu_k cos a), as Coulomb's law says.
-/// A particle whose step ends clear of an obstacle, or near its far side, but whose path from
-/// `start_x` crossed it (a thin obstacle or a fast particle) is stopped where the path first
-/// touches it, or, if it started touching, kept on the side it started from: no tunnelling.
-/// Obstacles are resolved one after the other, at their position at `time_s` (the end of the step).
+/// The obstacle's velocity there is its surface's: rigid motion, plus an animated mesh's
+/// deformation (the mean velocity over the step of the nearest point of its triangle).
+/// A particle whose step ends clear of an obstacle, or near its far side, but whose path crossed
+/// it (a thin obstacle, a fast particle, or a fast obstacle: the path is measured relative to the
+/// obstacle's surface, from where `start_x` would be had it moved with that surface) is stopped
+/// where the path first touches it, or, if it started touching, kept on the side it started from:
+/// no tunnelling. Obstacles are resolved one after the other, at their place at `time_s` (the end
+/// of the step), their surface at the start of the step serving only to carry the path's start.
 /// Pinned particles are left alone. Sets column p of `holding_normal` (3 x #P, resized) to the
 /// outward unit normal of the obstacle that held particle p (the last one, if several did), zero
 /// where none did, and returns the number of contacts.
