@@ -1,5 +1,6 @@
 // Mesh obstacle queries: signed distance of points near a closed triangle mesh, and what the
-// winding-number inside test adds to the AABB tree's closest-point query.
+// winding-number inside test adds to the AABB tree's closest-point query; and the cost of an
+// animated mesh's surface at a new instant (what each step of a moving body pays).
 //
 //   ./build/release/bench/obstacle_bench --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true   (one command line)
@@ -90,6 +91,22 @@ void WindingNumber(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points.size()));
 }
 BENCHMARK(WindingNumber)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
+
+/// An animated sphere's surface at a new instant each iteration: its vertices interpolated, its
+/// AABB tree and winding-number tree built.
+void AnimatedSurfaceAtANewInstant(benchmark::State& state) {
+  const IndexedMesh mesh = sphere(static_cast<int>(state.range(0)));
+  std::vector<Eigen::Vector3d> moved = mesh.vertices;
+  for (Eigen::Vector3d& x : moved) x *= 1.5;
+  const auto animation = make_mesh_animation(mesh, {{0.0, 1.0}, {mesh.vertices, moved}});
+  double time_s = 0.0;
+  for (auto _ : state) {
+    time_s = std::fmod(time_s + 0.001, 1.0);  // never the instant of a kept surface
+    benchmark::DoNotOptimize(animation->at(time_s));
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.faces.size());
+}
+BENCHMARK(AnimatedSurfaceAtANewInstant)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tissu

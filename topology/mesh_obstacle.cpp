@@ -11,6 +11,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <string>
@@ -203,18 +204,26 @@ class MeshAnimation final : public SurfaceAnimation {
  public:
   MeshAnimation(MeshSamples samples, std::vector<std::array<int, 3>> triangles, bool closed)
       : m_samples(std::move(samples)), m_triangles(std::move(triangles)), m_closed(closed) {
+    std::set<int> used;  // the vertices of its triangles: other parts' may move, not these
+    for (const std::array<int, 3>& t : m_triangles) used.insert(t.begin(), t.end());
     for (std::size_t k = 1; k < m_samples.times_s.size(); ++k) {
       const double duration_s = m_samples.times_s[k] - m_samples.times_s[k - 1];
-      for (std::size_t v = 0; v < m_samples.vertices_m[k].size(); ++v) {
+      double fastest_m_per_s = 0.0;
+      for (int v : used) {
         const double moved_m = (m_samples.vertices_m[k][v] - m_samples.vertices_m[k - 1][v]).norm();
-        m_fastest_m_per_s = std::max(m_fastest_m_per_s, moved_m / duration_s);
+        fastest_m_per_s = std::max(fastest_m_per_s, moved_m / duration_s);
       }
+      // a still segment shares the surface of the first sample of the still run it ends
+      const int k0 = static_cast<int>(k) - 1;
+      m_still_from.push_back(fastest_m_per_s > 0.0 ? -1
+                             : k0 > 0 && m_still_from[k0 - 1] >= 0 ? m_still_from[k0 - 1]
+                                                                   : k0);
+      m_fastest_m_per_s = std::max(m_fastest_m_per_s, fastest_m_per_s);
     }
   }
 
   std::shared_ptr<const SurfaceQuery> at(double time_s) const override {
-    const std::vector<double>& times = m_samples.times_s;
-    const double t = std::clamp(time_s, times.front(), times.back());
+    const double t = still_instant(time_s);
     const std::lock_guard<std::mutex> lock(m_mutex);
     for (const auto& [built_s, surface] : m_built) {
       if (std::abs(built_s - t) <= same_instant_s) return surface;
@@ -230,6 +239,21 @@ class MeshAnimation final : public SurfaceAnimation {
  private:
   static constexpr double same_instant_s = 1e-9;
   static constexpr std::size_t kept_surfaces = 4;
+
+  /// The instant whose surface is the one at `time_s`: the first or last sample's outside the
+  /// samples' times, the start of a segment over which nothing moves (a torso while the arms
+  /// move: its surface is built once), else `time_s`.
+  double still_instant(double time_s) const {
+    const std::vector<double>& times = m_samples.times_s;
+    const double t = std::clamp(time_s, times.front(), times.back());
+    if (times.size() == 1) return t;
+    // the segment holding t: the last one for t at the last sample
+    const std::size_t segment =
+        std::min<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin(),
+                              times.size() - 1) - 1;
+    if (m_still_from[segment] >= 0) return times[m_still_from[segment]];
+    return t;
+  }
 
   /// The vertices at t, within the samples' times: linear between the two samples around it.
   std::vector<Eigen::Vector3d> vertices_at(double t) const {
@@ -250,6 +274,9 @@ class MeshAnimation final : public SurfaceAnimation {
   std::vector<std::array<int, 3>> m_triangles;
   bool m_closed;
   double m_fastest_m_per_s = 0.0;
+  /// per segment between consecutive samples: where nothing moves, the first sample of the still
+  /// run it ends; -1 where something moves
+  std::vector<int> m_still_from;
   mutable std::mutex m_mutex;  // guards m_built
   mutable std::deque<std::pair<double, std::shared_ptr<const SurfaceQuery>>> m_built;
 };
@@ -264,6 +291,32 @@ std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
   const ObstacleTriangles triangles = obstacle_triangles(mesh, r);
   r.closed = is_closed(triangles);
   return std::make_shared<MeshSurface>(mesh.vertices, triangles.kept, r.closed);
+}
+
+std::vector<IndexedMesh> separate_parts(const IndexedMesh& mesh) {
+  std::vector<int> parent(mesh.vertices.size());  // union-find over vertices
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&parent](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  const auto in_range = [&](int v) { return v >= 0 && v < static_cast<int>(parent.size()); };
+  for (const std::vector<int>& face : mesh.faces) {
+    for (int v : face) {
+      if (in_range(v) && in_range(face.front())) parent[root(v)] = root(face.front());
+    }
+  }
+  std::map<int, std::size_t> part_of_root;
+  std::vector<IndexedMesh> parts;
+  for (const std::vector<int>& face : mesh.faces) {
+    // a face with no vertex in range goes with the first part, where make_mesh_surface names it
+    const int key = !face.empty() && in_range(face.front()) ? root(face.front()) : -1;
+    const auto [it, added] = part_of_root.try_emplace(key, parts.size());
+    if (added) parts.push_back({mesh.vertices, {}, {}});
+    parts[it->second].faces.push_back(face);
+  }
+  if (parts.empty()) parts.push_back(mesh);  // no faces: make_mesh_surface says so
+  return parts;
 }
 
 std::shared_ptr<const SurfaceAnimation> make_mesh_animation(const IndexedMesh& mesh,

@@ -36,6 +36,12 @@ struct ObstacleMeshReport {
 std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
                                                       ObstacleMeshReport* report = nullptr);
 
+/// `mesh`'s faces in groups connected through shared vertices (its parts: a torso, an arm), each
+/// group a mesh with all of `mesh`'s vertices (so that an animation's positions fit every part).
+/// Where closed parts overlap, a point inside one is led out by the nearest face of the soup,
+/// which may be buried inside another part; queried alone, each part leads it out of itself.
+std::vector<IndexedMesh> separate_parts(const IndexedMesh& mesh);
+
 /// A mesh's vertex positions at increasing times: an animation (a body's point cache, a sequence
 /// of meshes of the same connectivity).
 struct MeshSamples {

@@ -13,16 +13,15 @@ namespace {
 
 /// Where an obstacle's rotations turn about unless its motion says: its centre (a sphere's or a
 /// box's), the first end of a capsule's axis, a plane's point, the mean of a mesh's corners.
-Eigen::Vector3d default_pivot(const Obstacle& obstacle) {
-  if (obstacle.shape != ObstacleShape::mesh) return obstacle.position;
-  const std::vector<Eigen::Vector3d>& corners = obstacle.surface->triangle_corners();
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& corner : corners) sum += corner;
-  return corners.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(corners.size()));
+Eigen::Vector3d default_pivot(const Obstacle& obstacle, const MeshObstacleParts& mesh) {
+  return obstacle.shape == ObstacleShape::mesh ? mesh.centre_m : obstacle.position;
 }
 
-Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
+/// One obstacle of the scenario: a mesh of several parts gives one obstacle per part (with the
+/// same keys), the others one.
+std::vector<Obstacle> read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
   Obstacle ob;
+  MeshObstacleParts mesh;
   const std::string type = o.choice("type", {"plane", "sphere", "capsule", "box", "mesh"});
   if (type == "plane") {
     ob.shape = ObstacleShape::plane;
@@ -39,7 +38,7 @@ Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
     ob.radius_m = o.number("radius", positive(" (m)"));
   } else if (type == "mesh") {
     ob.shape = ObstacleShape::mesh;
-    read_mesh_obstacle(o, ob, notes);
+    mesh = read_mesh_obstacle(o, notes);
   } else {
     ob.shape = ObstacleShape::box;
     ob.position = o.vector3("center");
@@ -51,9 +50,15 @@ Obstacle read_obstacle(JsonObjectReader o, std::vector<std::string>& notes) {
   ob.static_friction = o.number_or("static_friction", 0.0, non_negative(""));
   ob.kinetic_friction = o.number_or("kinetic_friction", ob.static_friction,
                                     between(0.0, ob.static_friction, " (at most static_friction)"));
-  if (o.has("motion")) ob.motion = read_motion(o.object("motion"), default_pivot(ob));
+  if (o.has("motion")) ob.motion = read_motion(o.object("motion"), default_pivot(ob, mesh));
   o.finish();
-  return ob;
+  if (ob.shape != ObstacleShape::mesh) return {ob};
+  std::vector<Obstacle> parts(mesh.surfaces.size(), ob);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    parts[k].surface = mesh.surfaces[k];
+    if (!mesh.animations.empty()) parts[k].animation = mesh.animations[k];
+  }
+  return parts;
 }
 
 }  // namespace
@@ -62,7 +67,9 @@ std::vector<Obstacle> read_obstacles(JsonObjectReader& top, std::vector<std::str
   std::vector<Obstacle> obstacles;
   if (!top.has("obstacles")) return obstacles;
   for (const ArrayElement& element : top.array("obstacles")) {
-    obstacles.push_back(read_obstacle(object_reader(element, top.file()), notes));
+    for (Obstacle& part : read_obstacle(object_reader(element, top.file()), notes)) {
+      obstacles.push_back(std::move(part));
+    }
   }
   return obstacles;
 }

@@ -144,7 +144,7 @@ MeshSamples read_samples(JsonObjectReader animation, const NumberedMesh& mesh,
 
 }  // namespace
 
-void read_mesh_obstacle(JsonObjectReader& o, Obstacle& obstacle, std::vector<std::string>& notes) {
+MeshObstacleParts read_mesh_obstacle(JsonObjectReader& o, std::vector<std::string>& notes) {
   const fs::path file = read_path(o, "file", "mesh file");
   const double scale =
       o.number_or("scale", 1.0, between(min_obstacle_scale, max_obstacle_scale, ""));
@@ -155,18 +155,33 @@ void read_mesh_obstacle(JsonObjectReader& o, Obstacle& obstacle, std::vector<std
   const Placement placed = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     return rotation * (scale * x) + position;
   };
+  MeshObstacleParts parts;
   ObstacleMeshReport report;
   std::string key = "file";
   try {
     NumberedMesh numbered = read_numbered_polygons(file);
     for (Eigen::Vector3d& x : numbered.mesh.vertices) x = placed(x);
+    // the whole soup first: it checks the faces and names them by their number in the file
     if (o.has("animation")) {
       key = "animation";
-      MeshSamples samples = read_samples(o.object("animation"), numbered, placed);
-      obstacle.animation = make_mesh_animation(numbered.mesh, std::move(samples), &report);
-      obstacle.surface = obstacle.animation->at(0.0);
+      const MeshSamples samples = read_samples(o.object("animation"), numbered, placed);
+      parts.surfaces.push_back(make_mesh_animation(numbered.mesh, samples, &report)->at(0.0));
+      numbered.mesh.vertices = samples.vertices_m.front();
+      for (const IndexedMesh& part : separate_parts(numbered.mesh)) {
+        parts.animations.push_back(make_mesh_animation(part, samples));
+      }
     } else {
-      obstacle.surface = make_mesh_surface(numbered.mesh, &report);
+      parts.surfaces.push_back(make_mesh_surface(numbered.mesh, &report));
+    }
+    const std::vector<Eigen::Vector3d>& corners = parts.surfaces.front()->triangle_corners();
+    for (const Eigen::Vector3d& corner : corners) parts.centre_m += corner;
+    parts.centre_m /= static_cast<double>(corners.size());
+    if (!parts.animations.empty()) {
+      parts.surfaces.clear();
+      for (const auto& animation : parts.animations) parts.surfaces.push_back(animation->at(0.0));
+    } else if (std::vector<IndexedMesh> split = separate_parts(numbered.mesh); split.size() > 1) {
+      parts.surfaces.clear();
+      for (const IndexedMesh& part : split) parts.surfaces.push_back(make_mesh_surface(part));
     }
   } catch (const MeshError& e) {
     throw ScenarioError(o.file() + ": " + o.key_path(key) + ": " + e.what());
@@ -177,6 +192,7 @@ void read_mesh_obstacle(JsonObjectReader& o, Obstacle& obstacle, std::vector<std
                     std::to_string(report.degenerate_faces) + " degenerate faces, kept " +
                     std::to_string(report.triangles) + " triangles");
   }
+  return parts;
 }
 
 }  // namespace tissu

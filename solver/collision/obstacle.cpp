@@ -93,7 +93,7 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlaceme
 Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlacement& before,
                                    const ObstaclePlacement& after, const Eigen::Vector3d& x) {
   Eigen::Vector3d local = before.pose.apply_inverse(x);  // in the obstacle's own frame
-  if (obstacle.animation) {
+  if (obstacle.animation && before.surface != after.surface) {  // else its shape held still
     const SurfaceDistance nearest = before.surface->distance(local);
     if (nearest.triangle >= 0) {
       local += point_on(*after.surface, nearest.triangle, nearest.barycentric) -
@@ -107,7 +107,7 @@ Eigen::Vector3d surface_velocity(const Obstacle& obstacle, const ObstaclePlaceme
                                  const ObstaclePlacement& after, const SurfaceDistance& nearest,
                                  const Eigen::Vector3d& x, double time_s, double duration_s) {
   Eigen::Vector3d velocity = obstacle.motion.point_velocity(x, time_s);
-  if (obstacle.animation && nearest.triangle >= 0) {
+  if (obstacle.animation && before.surface != after.surface && nearest.triangle >= 0) {
     const Eigen::Vector3d moved_m =
         point_on(*after.surface, nearest.triangle, nearest.barycentric) -
         point_on(*before.surface, nearest.triangle, nearest.barycentric);

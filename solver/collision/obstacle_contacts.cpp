@@ -110,13 +110,30 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
+    const Eigen::Vector3d start = start_x.segment<3>(3 * p);
+    Eigen::Ref<Eigen::Vector3d> x = state.x.segment<3>(3 * p), v = state.v.segment<3>(3 * p);
+    int touched = 0;
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       if (const auto normal =
-              resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start_x.segment<3>(3 * p),
-                      state.x.segment<3>(3 * p), state.v.segment<3>(3 * p))) {
+              resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, x, v)) {
         holding_normal.col(p) = *normal;
-        ++contacts;
+        ++touched;
       }
+    }
+    contacts += touched;
+    if (touched == 0 || obstacles.size() < 2) continue;
+    // Pushed out of one obstacle deep into another (a crease where two overlap: an armpit, the
+    // parts of a body mesh), it could be pushed back and forth without end: it goes back to where
+    // it started the step, carried by the surface it ended in, and moves with that surface. A
+    // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
+    // more than a thickness, is left where the last one put it (a hand holding cloth).
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+      const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
+      if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
+      x = carry_with_surface(obstacles[k], before[k], after[k], start);
+      v = surface_velocity(obstacles[k], before[k], after[k], surface_distance(obstacles[k], after[k], x),
+                           x, time_s, time_step_s);
+      break;
     }
   }
   return contacts;

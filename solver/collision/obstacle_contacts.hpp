@@ -30,6 +30,8 @@ namespace tissu {
 /// where the path first touches it, or, if it started touching, kept on the side it started from:
 /// no tunnelling. Obstacles are resolved one after the other, at their place at `time_s` (the end
 /// of the step), their surface at the start of the step serving only to carry the path's start.
+/// A particle that the last of them leaves inside another deeper than its thickness (a crease
+/// where two overlap) goes back to its start, carried by that obstacle's surface, at its velocity.
 /// Pinned particles are left alone. Sets column p of `holding_normal` (3 x #P, resized) to the
 /// outward unit normal of the obstacle that held particle p (the last one, if several did), zero
 /// where none did, and returns the number of contacts.

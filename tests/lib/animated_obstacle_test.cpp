@@ -186,6 +186,35 @@ TEST(AnimatedObstacle, BadAnimationsAreNamed) {
                         "file's 8 vertices, in its order, not 4"));
 }
 
+TEST(MeshObstacle, ASoupOfPartsIsResolvedPartByPart) {
+  // a torso (the cube) and an arm sunk 0.5 m into it, [0.5, 3] x [-0.2, 0.2]^2: one obstacle per
+  // part, so that a point inside the torso is led out of the torso, not to the arm's buried end
+  const fs::path dir = test::fresh_dir_for_this_test("mesh_obstacle");
+  IndexedMesh soup = cube();
+  const IndexedMesh arm = test::cube_mesh({1.75, 0.0, 0.0}, 1.0);
+  for (const Eigen::Vector3d& v : arm.vertices) {
+    soup.vertices.push_back({1.75 + 1.25 * (v.x() - 1.75), 0.2 * v.y(), 0.2 * v.z()});
+  }
+  for (std::vector<int> f : arm.faces) {
+    for (int& v : f) v += 8;
+    soup.faces.push_back(f);
+  }
+  write_mesh(dir / "body.obj", soup, MeshFormat::obj);
+  const Scenario s = with_obstacle(R"({ "type": "mesh", "file": ")" + (dir / "body.obj").string() +
+                                   R"(", "static_friction": 0.3, "motion": { "keyframes": [
+      { "time": 0 }, { "time": 1, "rotation": { "degrees": 90 } } ] } })");
+  ASSERT_EQ(s.solver.obstacles.size(), 2u);
+  const Eigen::Vector3d inside_torso(0.45, 0.0, 0.0);  // 0.05 m from the arm's buried end
+  EXPECT_NEAR(surface_distance(s.solver.obstacles[0], inside_torso, 0.0).distance_m, -0.55, 1e-12);
+  EXPECT_GT(surface_distance(s.solver.obstacles[1], inside_torso, 0.0).distance_m, 0.0);
+  for (const Obstacle& part : s.solver.obstacles) {
+    EXPECT_EQ(part.static_friction, 0.3);
+    // both turn about the whole mesh's centre, the mean of all its triangle corners
+    EXPECT_TRUE(part.motion.pivot_m.isApprox(s.solver.obstacles[0].motion.pivot_m));
+  }
+  EXPECT_GT(s.solver.obstacles[0].motion.pivot_m.x(), 0.5);
+}
+
 TEST(AnimatedObstacle, VerticesTheMeshFileJoinsMustMoveTogether) {
   // two triangles with a corner each at the origin, as two file vertices: the reader joins them,
   // and a cache that moves them apart cannot be followed

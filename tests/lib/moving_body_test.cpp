@@ -1,5 +1,6 @@
 // Cloth on a moving body: the skirt_walk demo's skirt stays outside every part of the body (legs
-// swinging, arms rising) at every frame.
+// swinging, arms rising) at every frame, and the tshirt_arms demo's shirt outside its animated
+// body (a deforming mesh) after every step.
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,37 @@ TEST(MovingBody, TheSkirtStaysOutsideTheWalkingBody) {
   // signed distance >= -thickness: no particle inside a part (the thickness is the cloth's half)
   EXPECT_GE(deepest_m, 0.0);
   EXPECT_GT(leg_contacts, 100) << "the legs never reached the skirt: the scene tests nothing";
+}
+
+TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
+  // 1.7 s of data/scenarios/tshirt_arms.json, the arms lowered from the T-pose to the body's sides
+  // by 1.6 s; one frame per step (the demo's time step, 1/240 s), so every step is checked
+  const Scenario scenario = load_scenario(
+      TISSU_DATA_DIR "/scenarios/tshirt_arms.json",
+      {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=408",
+       "render.enabled=false", "output.meshes=false", "output.viewer=false",
+       "output.point_cache=false"});
+  ASSERT_EQ(scenario.solver.obstacles.size(), 3u);  // the torso and the two arms, each deforming
+  RunOptions options;
+  options.output_dir = test::fresh_temp_dir("moving_body/tshirt");
+  double deepest_m = std::numeric_limits<double>::infinity();  // least distance + thickness
+  int arm_contacts = 0;  // particles within 1 cm of an arm, over the steps
+  options.on_surface = [&](int frame, const MaterialSurface& surface) {
+    const double time_s = frame / scenario.frame_rate;
+    for (std::size_t k = 0; k < scenario.solver.obstacles.size(); ++k) {
+      const Obstacle& part = scenario.solver.obstacles[k];
+      const ObstaclePlacement placed = place(part, time_s);
+      for (const Eigen::Vector3d& x : surface.current.vertices) {
+        const double d = surface_distance(part, placed, x).distance_m;
+        deepest_m = std::min(deepest_m, d + part.thickness_m);
+        arm_contacts += k > 0 && d < 0.01;
+      }
+    }
+  };
+  const RunResult result = run_scenario(scenario, options);
+  ASSERT_TRUE(result.ok) << result.failure;
+  EXPECT_GE(deepest_m, 0.0);  // signed distance >= -thickness after every step
+  EXPECT_GT(arm_contacts, 10000) << "the arms never carried the sleeves: the scene tests nothing";
 }
 
 /// A 0.2 m x 0.4 m strip hanging from pins, its top 10 cm between two plates that close on it

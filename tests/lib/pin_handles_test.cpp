@@ -89,7 +89,9 @@ TEST(PinHandles, KeyframedHandlesCarryTheirParticlesThroughTheKeys) {
     // after the last key the side is upright along z, 0.5 m on, and holds
     const MaterialSurface& last = r.surfaces.at(30);
     for (std::size_t v = 0; v < last.rest_m.size(); ++v) {
-      if (on_top_side(last.rest_m[v])) EXPECT_NEAR(last.current.vertices[v].x(), 1.0, 1e-12);
+      if (on_top_side(last.rest_m[v])) {
+        EXPECT_NEAR(last.current.vertices[v].x(), 1.0, 1e-12);
+      }
     }
   }
 }

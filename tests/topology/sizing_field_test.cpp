@@ -146,7 +146,9 @@ TEST_F(SizingFieldTest,
   }
   ASSERT_GT(refine_fully(lcc, options, springs, inputs), 0);
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    if (v->info().source_index < 0) EXPECT_LT(v->info().rest_position.x(), 0.5);
+    if (v->info().source_index < 0) {
+      EXPECT_LT(v->info().rest_position.x(), 0.5);
+    }
   }
   test::expect_valid_with_mass(lcc, expected_mass_kg(), "after refining near the floor");
 }
