@@ -164,7 +164,7 @@ std::optional<std::string> divergence_cause(StepStatus status, const CompiledClo
 /// in `before_step`), on the model it was stepped with, while the complex still holds the
 /// previous frame's state or that of the last step that tore the cloth in this frame. Stops
 /// before a step when `stop` is requested, with steps.stopped set.
-std::optional<Divergence> step_frame(const Scenario& scenario, ClothComplex& lcc,
+std::optional<Divergence> step_frame_of(const Scenario& scenario, ClothComplex& lcc,
                                      CompiledCloth& cloth, StepWorkspace& workspace,
                                      PinHandles& handles, TearStep& tearing, SpeedLimit& limit,
                                      State& before_step, FrameSteps& steps, StopRequest stop) {
@@ -207,9 +207,9 @@ Adaptation adapt_frame(const Scenario& scenario, int frame, ClothComplex& lcc,
   return changes;
 }
 
+/// `kept`: where the state before the step is, e.g. "written to FILE".
 std::string divergence_message(const Scenario& scenario, int frame, const Divergence& divergence,
-                               const CompiledCloth& last_good,
-                               const std::filesystem::path& last_good_file) {
+                               const CompiledCloth& last_good, const std::string& kept) {
   const std::string energy = number_text(kinetic_energy(last_good.model, last_good.state), " J");
   return "frame " + std::to_string(frame) + ", step " + std::to_string(divergence.substep) +
          " of " + std::to_string(scenario.substeps) + " (t = " + std::to_string(divergence.time_s) +
@@ -217,8 +217,7 @@ std::string divergence_message(const Scenario& scenario, int frame, const Diverg
          std::to_string(scenario.solver.time_step) +
          " s is likely too large for the stiffness (more substeps or the implicit_euler "
          "integrator help); the state before that step (t = " +
-         std::to_string(last_good.state.time) + " s, kinetic energy " + energy + ") written to " +
-         last_good_file.string();
+         std::to_string(last_good.state.time) + " s, kinetic energy " + energy + ") " + kept;
 }
 
 /// Where the state before the step that diverged goes: last_good_frame_NNNNN.<ext> when it is the
@@ -361,7 +360,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   State before_step;
   for (int frame = 1; frame <= frame_count; ++frame) {
     FrameSteps steps;
-    if (const auto divergence = step_frame(scenario, lcc, cloth, workspace, handles, tearing, limit,
+    if (const auto divergence = step_frame_of(scenario, lcc, cloth, workspace, handles, tearing, limit,
                                            before_step, steps, options.stop)) {
       write_back(cloth, cloth.state, lcc);  // the state before the step that diverged
       const auto last_good =
@@ -369,7 +368,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
       write_mesh(last_good, current_mesh(lcc), {rest_positions(lcc), scenario.cloth.frame},
                  output.mesh_format);
       result.ok = false;
-      result.failure = divergence_message(scenario, frame, *divergence, cloth, last_good);
+      result.failure = divergence_message(scenario, frame, *divergence, cloth,
+                                          "written to " + last_good.string());
       render_recorded(result);
       return result;
     }
@@ -387,6 +387,58 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   }
   render_recorded(result);
   return result;
+}
+
+struct Simulation::Run {
+  explicit Run(Scenario s) : scenario(std::move(s)), tearing(scenario), handles(scenario.pins) {
+    build_scenario_cloth(scenario, lcc);
+    cloth = compile(lcc);
+    limit = speed_limit_at_start(cloth.model, scenario.solver, cloth.state);
+    limit.handle_speed_m_per_s = handles.fastest_speed_m_per_s(cloth.state);
+  }
+
+  Scenario scenario;
+  ClothComplex lcc;
+  CompiledCloth cloth;
+  StepWorkspace workspace;
+  TearStep tearing;
+  PinHandles handles;
+  SpeedLimit limit;
+  State before_step;
+  int frame = 0;
+};
+
+Simulation::Simulation(Scenario scenario) : m_run(std::make_unique<Run>(std::move(scenario))) {}
+
+Simulation::~Simulation() = default;
+
+void Simulation::step_frame() {
+  Run& r = *m_run;
+  FrameSteps steps;
+  if (const auto divergence = step_frame_of(r.scenario, r.lcc, r.cloth, r.workspace, r.handles,
+                                            r.tearing, r.limit, r.before_step, steps, {})) {
+    write_back(r.cloth, r.cloth.state, r.lcc);  // the state before the step that diverged
+    throw SimulationError(divergence_message(r.scenario, r.frame + 1, *divergence, r.cloth,
+                                             "kept (the arrays now)"));
+  }
+  ++r.frame;
+  adapt_frame(r.scenario, r.frame, r.lcc, r.cloth);
+}
+
+int Simulation::frame() const { return m_run->frame; }
+
+const Scenario& Simulation::scenario() const { return m_run->scenario; }
+
+FrameArrays Simulation::arrays() const {
+  const Run& r = *m_run;
+  return {r.frame,
+          r.cloth.state.time,
+          r.cloth.state.x,
+          r.cloth.state.v,
+          rest_positions(r.lcc),
+          r.cloth.model.mass,
+          current_mesh(r.lcc).faces,
+          {r.cloth.model.pinned.begin(), r.cloth.model.pinned.end()}};
 }
 
 }  // namespace tissu

@@ -3,10 +3,15 @@
 /// Runs a scenario: builds the cloth, steps it frame by frame, writes meshes and statistics.
 /// CGAL-free.
 
+#include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lib/frame_stats.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -73,5 +78,49 @@ ClothSummary check_scenario(const Scenario& scenario);
 /// library sets no process state, so Scenario::threads is for the program to apply (the tissu
 /// apps call omp_set_num_threads with it); results do not depend on it.
 RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
+
+/// One frame of a cloth as arrays, in particle order (row k is vertex k of the frame's mesh):
+/// what frames.h5 holds (lib/frame_arrays.hpp).
+struct FrameArrays {
+  int frame = 0;
+  double time_s = 0.0;
+  Eigen::VectorXd positions_m;                ///< 3n, xyz interleaved
+  Eigen::VectorXd velocities_m_per_s;         ///< 3n
+  std::vector<Eigen::Vector3d> rest_m;        ///< n material coordinates
+  Eigen::VectorXd masses_kg;                  ///< n lumped masses
+  std::vector<std::vector<int>> faces;        ///< triangles or quads, vertex ids
+  std::vector<std::uint8_t> pinned;           ///< n flags
+};
+
+/// A step that diverged; the message is run_scenario's (the frame, the step, the cause).
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A scenario's cloth stepped one frame at a time, writing nothing: the same steps, pin handles,
+/// tearing and adaptation as run_scenario (which writes and renders what this leaves to its
+/// caller), for programs that drive tissu themselves, such as the Python module. CGAL stays in
+/// the implementation.
+class Simulation {
+ public:
+  /// Builds and compiles the cloth of `scenario`: throws MeshError or PinError as run_scenario.
+  explicit Simulation(Scenario scenario);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Advances one frame (scenario.substeps steps). A step that diverges throws SimulationError,
+  /// and the cloth is then left in its state before that step.
+  void step_frame();
+  int frame() const;
+  const Scenario& scenario() const;
+  /// The cloth now.
+  FrameArrays arrays() const;
+
+ private:
+  struct Run;
+  std::unique_ptr<Run> m_run;
+};
 
 }  // namespace tissu
