@@ -9,6 +9,7 @@
 #include "apps/passive_openmp.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
+#include "apps/sweep_command.hpp"
 #include "apps/view_command.hpp"
 #include "lib/version_info.hpp"
 
@@ -47,10 +48,16 @@ int main(int argc, char** argv) {
       "measure E, nu and G of every stiffness formulation on test sheets (docs/materials.md)");
   tissu::add_material_test_options(*material_test_app, material_test);
 
+  tissu::SweepCommand sweep;
+  CLI::App* sweep_app = app.add_subcommand(
+      "sweep", "run a scenario over a grid or random draws of parameters (python3 -m tissu.sweep)");
+  tissu::add_sweep_options(*sweep_app, sweep);
+
   if (const std::optional<int> status = tissu::parse_command_line(app, argc, argv)) return *status;
   if (run_app->parsed()) return tissu::execute(run);
   if (check_app->parsed()) return tissu::execute(check);
   if (view_app->parsed()) return tissu::execute(view);
   if (material_test_app->parsed()) return tissu::execute(material_test);
+  if (sweep_app->parsed()) return tissu::execute(sweep);
   return tissu::execute(render);
 }

@@ -16,6 +16,7 @@ packages=(
   blender # the point cache and glTF frames played in Blender (tests/apps/caches_in_blender.sh)
   libbullet-dev # the peer in bench/bullet_sheet_bench.cpp (issue 16)
   pybind11-dev python3-dev # the tissu Python module (python/), for Debian's /usr/bin/python3
+  python3-distributed # sweeps on a Dask cluster (python/tissu/sweep.py)
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang libclang-rt-14-dev)

@@ -27,8 +27,9 @@ def fresh(name):
 
 
 def obj_vertices(file):
-    return np.array([[float(x) for x in line.split()[1:4]]
-                     for line in open(file) if line.startswith("v ")])
+    with open(file) as lines:
+        return np.array([[float(x) for x in line.split()[1:4]]
+                         for line in lines if line.startswith("v ")])
 
 
 class MatchesTheCommandLine(unittest.TestCase):
