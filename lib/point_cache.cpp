@@ -61,10 +61,16 @@ void PointCacheFile::append(const Eigen::VectorXd& x) {
   ++m_samples;
 }
 
-PointCache read_point_cache(const std::filesystem::path& file) {
+PointCache read_point_cache(const std::filesystem::path& file, std::uintmax_t max_bytes) {
   const auto fail = [&](const std::string& what) {
     return PointCacheError("point cache " + file.string() + ": " + what);
   };
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (error || !std::filesystem::is_regular_file(file)) throw fail("cannot be opened");
+  if (size > max_bytes) {
+    throw fail(std::to_string(size) + " bytes, over the limit of " + std::to_string(max_bytes));
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw fail("cannot be opened");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -10,6 +10,7 @@
 /// then, per sample, `points` positions x y z as float32 (m). CGAL-free.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
@@ -52,7 +53,9 @@ struct PointCache {
 /// header's sample count are ignored (a cache still being written). Throws PointCacheError, naming
 /// the file, when it cannot be opened, has no "POINTCACHE2" header of version 1, no point or no
 /// sample, a sample rate that is not positive and finite, fewer bytes than its header counts, or
-/// a non-finite coordinate (naming the sample and the point, from 0).
-PointCache read_point_cache(const std::filesystem::path& file);
+/// a non-finite coordinate (naming the sample and the point, from 0), or more than `max_bytes`
+/// (checked before reading: the file is untrusted, and read whole).
+PointCache read_point_cache(const std::filesystem::path& file,
+                            std::uintmax_t max_bytes = std::uintmax_t{1} << 30);
 
 }  // namespace tissu

@@ -91,6 +91,17 @@ std::string error_of_edited_cache(Edit edit) {
   return "no error";
 }
 
+TEST(PointCache, RefusesAFileOverItsSizeLimitBeforeReadingIt) {
+  const fs::path file = cube_with_cache() / "cube.pc2";  // 320 bytes
+  try {
+    read_point_cache(file, 319);
+    FAIL() << "accepted";
+  } catch (const PointCacheError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cube.pc2: 320 bytes, over the limit of 319"));
+  }
+  EXPECT_EQ(read_point_cache(file, 320).samples.size(), 3u);
+}
+
 TEST(PointCache, RefusesABrokenFileNamingWhatIsWrong) {
   EXPECT_THAT(error_of_edited_cache([](std::string& b) { b[0] = 'X'; }),
               HasSubstr("cube.pc2: not a PC2 file"));
