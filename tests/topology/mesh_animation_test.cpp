@@ -57,7 +57,7 @@ TEST(MeshAnimation, IsItsSamplesAtTheirTimesLinearBetweenAndHeldOutside) {
 
 TEST(MeshSurface, ItsNearestPointIsItsTriangleAtItsBarycentricCoordinates) {
   const auto surface = make_mesh_surface(cube());
-  for (const Eigen::Vector3d x : {Eigen::Vector3d(3, 0.2, -0.4), Eigen::Vector3d(0.3, 0.1, 0.2),
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(3, 0.2, -0.4), Eigen::Vector3d(0.3, 0.1, 0.2),
                                   Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(-1.5, 0.3, 1.7)}) {
     const SurfaceDistance d = surface->distance(x);
     ASSERT_GE(d.triangle, 0);
