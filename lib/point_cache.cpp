@@ -1,7 +1,7 @@
 #include "lib/point_cache.hpp"
 
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>

@@ -23,8 +23,8 @@ class PointCacheFile {
  public:
   /// Creates `file` with a header of `points` points and no sample yet. Throws FileWriteError.
   PointCacheFile(const std::filesystem::path& file, int points);
-  /// Appends one sample, `x` (3 × points values, m, xyz interleaved), then counts it in the header: a
-  /// killed run leaves a cache whose count is at most the samples it holds, which readers play.
+  /// Appends one sample, `x` (3 × points values, m, xyz interleaved), then counts it in the header:
+  /// a killed run leaves a cache whose count is at most the samples it holds, which readers play.
   /// Throws FileWriteError (the file then keeps its earlier samples), std::invalid_argument if
   /// `x` does not hold the header's point count.
   void append(const Eigen::VectorXd& x);
@@ -45,7 +45,7 @@ class PointCacheError : public std::runtime_error {
 /// What a PC2 file holds.
 struct PointCache {
   double start_frame = 0.0;
-  double sample_rate = 1.0;  ///< frames between samples
+  double sample_rate = 1.0;                           ///< frames between samples
   std::vector<std::vector<Eigen::Vector3d>> samples;  ///< per sample, `points` positions (m)
 };
 

@@ -165,9 +165,9 @@ std::optional<std::string> divergence_cause(StepStatus status, const CompiledClo
 /// previous frame's state or that of the last step that tore the cloth in this frame. Stops
 /// before a step when `stop` is requested, with steps.stopped set.
 std::optional<Divergence> step_frame_of(const Scenario& scenario, ClothComplex& lcc,
-                                     CompiledCloth& cloth, StepWorkspace& workspace,
-                                     PinHandles& handles, TearStep& tearing, SpeedLimit& limit,
-                                     State& before_step, FrameSteps& steps, StopRequest stop) {
+                                        CompiledCloth& cloth, StepWorkspace& workspace,
+                                        PinHandles& handles, TearStep& tearing, SpeedLimit& limit,
+                                        State& before_step, FrameSteps& steps, StopRequest stop) {
   const auto start = std::chrono::steady_clock::now();
   for (int sub = 0; sub < scenario.substeps; ++sub) {
     if (stop.requested()) {
@@ -360,8 +360,8 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
   State before_step;
   for (int frame = 1; frame <= frame_count; ++frame) {
     FrameSteps steps;
-    if (const auto divergence = step_frame_of(scenario, lcc, cloth, workspace, handles, tearing, limit,
-                                           before_step, steps, options.stop)) {
+    if (const auto divergence = step_frame_of(scenario, lcc, cloth, workspace, handles, tearing,
+                                              limit, before_step, steps, options.stop)) {
       write_back(cloth, cloth.state, lcc);  // the state before the step that diverged
       const auto last_good =
           last_good_file(options.output_dir, frame, divergence->substep, output.mesh_format);
@@ -418,16 +418,20 @@ void Simulation::step_frame() {
   if (const auto divergence = step_frame_of(r.scenario, r.lcc, r.cloth, r.workspace, r.handles,
                                             r.tearing, r.limit, r.before_step, steps, {})) {
     write_back(r.cloth, r.cloth.state, r.lcc);  // the state before the step that diverged
-    throw SimulationError(divergence_message(r.scenario, r.frame + 1, *divergence, r.cloth,
-                                             "kept (the arrays now)"));
+    throw SimulationError(
+        divergence_message(r.scenario, r.frame + 1, *divergence, r.cloth, "kept (the arrays now)"));
   }
   ++r.frame;
   adapt_frame(r.scenario, r.frame, r.lcc, r.cloth);
 }
 
-int Simulation::frame() const { return m_run->frame; }
+int Simulation::frame() const {
+  return m_run->frame;
+}
 
-const Scenario& Simulation::scenario() const { return m_run->scenario; }
+const Scenario& Simulation::scenario() const {
+  return m_run->scenario;
+}
 
 FrameArrays Simulation::arrays() const {
   const Run& r = *m_run;

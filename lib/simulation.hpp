@@ -84,12 +84,12 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options);
 struct FrameArrays {
   int frame = 0;
   double time_s = 0.0;
-  Eigen::VectorXd positions_m;                ///< 3n, xyz interleaved
-  Eigen::VectorXd velocities_m_per_s;         ///< 3n
-  std::vector<Eigen::Vector3d> rest_m;        ///< n material coordinates
-  Eigen::VectorXd masses_kg;                  ///< n lumped masses
-  std::vector<std::vector<int>> faces;        ///< triangles or quads, vertex ids
-  std::vector<std::uint8_t> pinned;           ///< n flags
+  Eigen::VectorXd positions_m;          ///< 3n, xyz interleaved
+  Eigen::VectorXd velocities_m_per_s;   ///< 3n
+  std::vector<Eigen::Vector3d> rest_m;  ///< n material coordinates
+  Eigen::VectorXd masses_kg;            ///< n lumped masses
+  std::vector<std::vector<int>> faces;  ///< triangles or quads, vertex ids
+  std::vector<std::uint8_t> pinned;     ///< n flags
 };
 
 /// A step that diverged; the message is run_scenario's (the frame, the step, the cause).

@@ -119,8 +119,9 @@ PYBIND11_MODULE(_tissu, m) {
       .def("step", &Simulation::step_frame, py::call_guard<py::gil_scoped_release>(),
            "Advances one frame (the scenario's substeps)")
       .def_property_readonly("frame", &Simulation::frame)
-      .def("arrays", [](const Simulation& s) { return arrays_dict(s.arrays()); },
-           "The cloth now: a dict of NumPy arrays named as in frames.h5");
+      .def(
+          "arrays", [](const Simulation& s) { return arrays_dict(s.arrays()); },
+          "The cloth now: a dict of NumPy arrays named as in frames.h5");
 
   m.def(
       "run",
@@ -152,6 +153,5 @@ PYBIND11_MODULE(_tissu, m) {
         return d;
       },
       py::arg("scenario"), py::arg("out"), py::arg("frames") = std::nullopt,
-      py::arg("on_frame") = nullptr,
-      "Runs a scenario as `tissu run` does, writing into `out`");
+      py::arg("on_frame") = nullptr, "Runs a scenario as `tissu run` does, writing into `out`");
 }

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/collision/primitive_distance.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/winding_number.hpp"
 
@@ -107,20 +108,6 @@ bool is_closed(const ObstacleTriangles& triangles) {
                      [](const auto& edge) { return edge.second == 0; });
 }
 
-/// Barycentric coordinates of `p`, a point of triangle abc, from the areas of its sub-triangles
-/// (Ericson 2005, "Real-Time Collision Detection", 3.4); a triangle of no area gives its first
-/// corner.
-Eigen::Vector3d barycentric_of(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                               const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d00 = ab.dot(ab), d01 = ab.dot(ac), d11 = ac.dot(ac);
-  const double d20 = ap.dot(ab), d21 = ap.dot(ac);
-  const double det = d00 * d11 - d01 * d01;
-  if (!(det > 0.0)) return Eigen::Vector3d::UnitX();
-  const double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
-  return {1.0 - v - w, v, w};
-}
-
 class MeshSurface final : public SurfaceQuery {
  public:
   MeshSurface(const MeshSurface&) = delete;  // the tree points into m_triangles
@@ -144,7 +131,7 @@ class MeshSurface final : public SurfaceQuery {
     const Eigen::Vector3d& a = m_corners[3 * index];
     const Eigen::Vector3d& b = m_corners[3 * index + 1];
     const Eigen::Vector3d& c = m_corners[3 * index + 2];
-    const Eigen::Vector3d barycentric = barycentric_of(nearest, a, b, c);
+    const Eigen::Vector3d barycentric = nearest_on_triangle(nearest, a, b, c);  // of itself
     const Eigen::Vector3d offset = x_m - nearest;
     const double gap_m = offset.norm();
     if (!(gap_m > 1e-12)) return {0.0, (b - a).cross(c - a).normalized(), index, barycentric};
@@ -215,7 +202,7 @@ class MeshAnimation final : public SurfaceAnimation {
       }
       // a still segment shares the surface of the first sample of the still run it ends
       const int k0 = static_cast<int>(k) - 1;
-      m_still_from.push_back(fastest_m_per_s > 0.0 ? -1
+      m_still_from.push_back(fastest_m_per_s > 0.0                 ? -1
                              : k0 > 0 && m_still_from[k0 - 1] >= 0 ? m_still_from[k0 - 1]
                                                                    : k0);
       m_fastest_m_per_s = std::max(m_fastest_m_per_s, fastest_m_per_s);
@@ -250,7 +237,8 @@ class MeshAnimation final : public SurfaceAnimation {
     // the segment holding t: the last one for t at the last sample
     const std::size_t segment =
         std::min<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin(),
-                              times.size() - 1) - 1;
+                              times.size() - 1) -
+        1;
     if (m_still_from[segment] >= 0) return times[m_still_from[segment]];
     return t;
   }

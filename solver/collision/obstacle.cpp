@@ -92,7 +92,7 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlaceme
 
 Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlacement& before,
                                    const ObstaclePlacement& after, const Eigen::Vector3d& x) {
-  Eigen::Vector3d local = before.pose.apply_inverse(x);  // in the obstacle's own frame
+  Eigen::Vector3d local = before.pose.apply_inverse(x);         // in the obstacle's own frame
   if (obstacle.animation && before.surface != after.surface) {  // else its shape held still
     const SurfaceDistance nearest = before.surface->distance(local);
     if (nearest.triangle >= 0) {

@@ -131,8 +131,8 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
       const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
       if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
       x = carry_with_surface(obstacles[k], before[k], after[k], start);
-      v = surface_velocity(obstacles[k], before[k], after[k], surface_distance(obstacles[k], after[k], x),
-                           x, time_s, time_step_s);
+      v = surface_velocity(obstacles[k], before[k], after[k],
+                           surface_distance(obstacles[k], after[k], x), x, time_s, time_step_s);
       break;
     }
   }

@@ -4,8 +4,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -24,7 +24,9 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 /// The cube [-1, 1]^3 (8 vertices, 12 triangles, closed).
-IndexedMesh cube() { return test::cube_mesh(Eigen::Vector3d::Zero(), 1.0); }
+IndexedMesh cube() {
+  return test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);
+}
 
 /// A closed tetrahedron, facing outwards.
 IndexedMesh tetrahedron() {
@@ -37,7 +39,8 @@ IndexedMesh tetrahedron() {
 /// `mesh`'s positions moved by `offset`, flattened as a cache sample.
 Eigen::VectorXd sample(const IndexedMesh& mesh, const Eigen::Vector3d& offset) {
   Eigen::VectorXd x(3 * mesh.vertices.size());
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) x.segment<3>(3 * v) = mesh.vertices[v] + offset;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    x.segment<3>(3 * v) = mesh.vertices[v] + offset;
   return x;
 }
 
@@ -109,8 +112,9 @@ TEST(PointCache, RefusesABrokenFileNamingWhatIsWrong) {
               HasSubstr("not a PC2 file"));
   EXPECT_THAT(error_of_edited_cache([](std::string& b) { b[12] = 2; }),
               HasSubstr("version 2; expected 1"));
-  EXPECT_THAT(error_of_edited_cache([](std::string& b) { b.resize(b.size() - 1); }),
-              HasSubstr("its header counts 3 samples of 8 points (320 bytes), but the file has 319"));
+  EXPECT_THAT(
+      error_of_edited_cache([](std::string& b) { b.resize(b.size() - 1); }),
+      HasSubstr("its header counts 3 samples of 8 points (320 bytes), but the file has 319"));
   EXPECT_THAT(error_of_edited_cache([](std::string& b) { std::fill_n(&b[16], 4, '\xff'); }),
               HasSubstr("-1 points and 3 samples; expected at least one of each"));
   EXPECT_THAT(error_of_edited_cache([](std::string& b) {
@@ -126,18 +130,19 @@ TEST(AnimatedObstacle, FollowsItsPointCachePlacedLikeItsMesh) {
   // samples at 0.5, 0.6 and 0.7 s (10 frames per second from 0.5 s), scaled by a half and raised
   // by 1 m like the mesh file: the cube of half-side 0.5 moves +0.5 m per sample
   const fs::path dir = cube_with_cache();
-  const Scenario s = with_obstacle(R"({ "type": "mesh", "file": ")" + (dir / "cube.obj").string() +
-                                   R"(", "scale": 0.5, "position": [0, 0, 1],
-      "animation": { "point_cache": ")" + (dir / "cube.pc2").string() +
-                                   R"(", "frame_rate": 10, "start_time": 0.5 } })");
+  const Scenario s =
+      with_obstacle(R"({ "type": "mesh", "file": ")" + (dir / "cube.obj").string() +
+                    R"(", "scale": 0.5, "position": [0, 0, 1],
+      "animation": { "point_cache": ")" +
+                    (dir / "cube.pc2").string() + R"(", "frame_rate": 10, "start_time": 0.5 } })");
   const Obstacle& o = s.solver.obstacles.at(0);
   ASSERT_TRUE(o.animation);
   const Eigen::Vector3d x(3.0, 0.0, 1.0);
   EXPECT_NEAR(surface_distance(o, x, 0.0).distance_m, 2.5, 1e-6);  // held before the first
   EXPECT_NEAR(surface_distance(o, x, 0.55).distance_m, 2.25, 1e-6);
   EXPECT_NEAR(surface_distance(o, x, 0.7).distance_m, 1.5, 1e-6);
-  EXPECT_NEAR(surface_distance(o, x, 9.0).distance_m, 1.5, 1e-6);  // and after the last
-  EXPECT_NEAR(o.animation->fastest_speed_m_per_s(), 5.0, 1e-6);   // 0.5 m in 0.1 s
+  EXPECT_NEAR(surface_distance(o, x, 9.0).distance_m, 1.5, 1e-6);         // and after the last
+  EXPECT_NEAR(o.animation->fastest_speed_m_per_s(), 5.0, 1e-6);           // 0.5 m in 0.1 s
   for (const Eigen::Vector3d& corner : obstacle_mesh(o, 0.6).vertices) {  // drawn where it is
     EXPECT_NEAR(std::abs(corner.x() - 0.5), 0.5, 1e-6);
     EXPECT_NEAR(std::abs(corner.z() - 1.0), 0.5, 1e-6);
@@ -152,8 +157,10 @@ TEST(AnimatedObstacle, FollowsItsKeyframeMeshes) {
   write_mesh(dir / "large.obj", moved, MeshFormat::obj);
   const Scenario s = with_obstacle(R"({ "type": "mesh", "file": ")" + (dir / "small.obj").string() +
                                    R"(", "animation": { "keyframes": [
-      { "time": 1, "file": ")" + (dir / "small.obj").string() + R"(" },
-      { "time": 2, "file": ")" + (dir / "large.obj").string() + R"(" } ] } })");
+      { "time": 1, "file": ")" + (dir / "small.obj").string() +
+                                   R"(" },
+      { "time": 2, "file": ")" + (dir / "large.obj").string() +
+                                   R"(" } ] } })");
   const Obstacle& o = s.solver.obstacles.at(0);
   const Eigen::Vector3d x(3.0, 0.0, 0.0);
   EXPECT_NEAR(surface_distance(o, x, 1.0).distance_m, 2.0, 1e-12);
@@ -163,7 +170,8 @@ TEST(AnimatedObstacle, FollowsItsKeyframeMeshes) {
 
 TEST(AnimatedObstacle, BadAnimationsAreNamed) {
   const fs::path dir = cube_with_cache();
-  const std::string mesh = R"({ "type": "mesh", "file": ")" + (dir / "cube.obj").string() + R"(", )";
+  const std::string mesh =
+      R"({ "type": "mesh", "file": ")" + (dir / "cube.obj").string() + R"(", )";
   const std::string cache = (dir / "cube.pc2").string();
   EXPECT_THAT(error_with_obstacle(mesh + R"("animation": {} })"),
               HasSubstr("obstacles[0].animation.point_cache: expected exactly one of "
@@ -188,11 +196,13 @@ TEST(AnimatedObstacle, BadAnimationsAreNamed) {
   write_mesh(dir / "tetra.obj", tetrahedron(), MeshFormat::obj);
   const std::string cube_file = (dir / "cube.obj").string();
   EXPECT_THAT(error_with_obstacle(mesh + R"("animation": { "keyframes": [
-      { "time": 1, "file": ")" + cube_file + R"(" }, { "time": 1, "file": ")" + cube_file + R"(" } ] } })"),
+      { "time": 1, "file": ")" + cube_file +
+                                  R"(" }, { "time": 1, "file": ")" + cube_file + R"(" } ] } })"),
               HasSubstr("obstacles[0].animation.keyframes[1].time: expected a time after the "
                         "previous keyframe's"));
   EXPECT_THAT(error_with_obstacle(mesh + R"("animation": { "keyframes": [
-      { "time": 1, "file": ")" + (dir / "tetra.obj").string() + R"(" } ] } })"),
+      { "time": 1, "file": ")" + (dir / "tetra.obj").string() +
+                                  R"(" } ] } })"),
               HasSubstr("obstacles[0].animation.keyframes[0].file: expected a mesh with the mesh "
                         "file's 8 vertices, in its order, not 4"));
 }

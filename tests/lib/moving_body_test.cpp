@@ -49,11 +49,11 @@ TEST(MovingBody, TheSkirtStaysOutsideTheWalkingBody) {
 TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
   // 1.7 s of data/scenarios/tshirt_arms.json, the arms lowered from the T-pose to the body's sides
   // by 1.6 s; one frame per step (the demo's time step, 1/240 s), so every step is checked
-  const Scenario scenario = load_scenario(
-      TISSU_DATA_DIR "/scenarios/tshirt_arms.json",
-      {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=408",
-       "render.enabled=false", "output.meshes=false", "output.viewer=false",
-       "output.point_cache=false"});
+  const Scenario scenario =
+      load_scenario(TISSU_DATA_DIR "/scenarios/tshirt_arms.json",
+                    {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=408",
+                     "render.enabled=false", "output.meshes=false", "output.viewer=false",
+                     "output.point_cache=false"});
   ASSERT_EQ(scenario.solver.obstacles.size(), 3u);  // the torso and the two arms, each deforming
   RunOptions options;
   options.output_dir = test::fresh_temp_dir("moving_body/tshirt");

@@ -18,7 +18,9 @@ namespace {
 using ::testing::HasSubstr;
 
 /// The cube [-1, 1]^3, closed, facing outwards.
-IndexedMesh cube() { return test::cube_mesh(Eigen::Vector3d::Zero(), 1.0); }
+IndexedMesh cube() {
+  return test::cube_mesh(Eigen::Vector3d::Zero(), 1.0);
+}
 
 /// `mesh`'s vertices moved by `f`.
 template <class F>
@@ -33,9 +35,10 @@ std::vector<Eigen::Vector3d> moved(const IndexedMesh& mesh, F f) {
 std::shared_ptr<const SurfaceAnimation> moving_cube() {
   const IndexedMesh c = cube();
   const Eigen::Vector3d dx = Eigen::Vector3d::UnitX();
-  MeshSamples samples{{0.0, 1.0, 2.0},
-                      {c.vertices, moved(c, [&](const Eigen::Vector3d& v) { return v + dx; }),
-                       moved(c, [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(2 * v + dx); })}};
+  MeshSamples samples{
+      {0.0, 1.0, 2.0},
+      {c.vertices, moved(c, [&](const Eigen::Vector3d& v) { return v + dx; }),
+       moved(c, [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(2 * v + dx); })}};
   return make_mesh_animation(c, samples);
 }
 
@@ -58,7 +61,7 @@ TEST(MeshAnimation, IsItsSamplesAtTheirTimesLinearBetweenAndHeldOutside) {
 TEST(MeshSurface, ItsNearestPointIsItsTriangleAtItsBarycentricCoordinates) {
   const auto surface = make_mesh_surface(cube());
   for (const Eigen::Vector3d& x : {Eigen::Vector3d(3, 0.2, -0.4), Eigen::Vector3d(0.3, 0.1, 0.2),
-                                  Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(-1.5, 0.3, 1.7)}) {
+                                   Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(-1.5, 0.3, 1.7)}) {
     const SurfaceDistance d = surface->distance(x);
     ASSERT_GE(d.triangle, 0);
     EXPECT_NEAR(d.barycentric.sum(), 1.0, 1e-12);
@@ -90,9 +93,10 @@ TEST(MeshAnimation, RefusesSamplesThatDoNotFitItsMesh) {
               HasSubstr("sample 1: vertex 3 has a non-finite coordinate"));
   // the whole cube flattened onto z = 0: its side triangles lose their area
   EXPECT_THAT(refusal({{0.0, 1.0},
-                       {c.vertices, moved(c, [](const Eigen::Vector3d& v) {
-                          return Eigen::Vector3d(v.x(), v.y(), 0.0);
-                        })}}),
+                       {c.vertices, moved(c,
+                                          [](const Eigen::Vector3d& v) {
+                                            return Eigen::Vector3d(v.x(), v.y(), 0.0);
+                                          })}}),
               HasSubstr("sample 1: the triangle of vertices"));
 }
 
@@ -111,10 +115,10 @@ TEST(MeshAnimation, FrictionCarriesAParticleAsTheSurfaceStretches) {
   Obstacle floor;
   floor.shape = ObstacleShape::mesh;
   floor.static_friction = floor.kinetic_friction = 1.0;
-  floor.animation = make_mesh_animation(
-      p, {{0.0, 1.0}, {p.vertices, moved(p, [](const Eigen::Vector3d& v) {
-                         return Eigen::Vector3d(2 * v.x(), v.y(), v.z());
-                       })}});
+  floor.animation =
+      make_mesh_animation(p, {{0.0, 1.0}, {p.vertices, moved(p, [](const Eigen::Vector3d& v) {
+                                             return Eigen::Vector3d(2 * v.x(), v.y(), v.z());
+                                           })}});
   floor.surface = floor.animation->at(0.0);
   State state;
   const SpringModel model =
