@@ -28,6 +28,15 @@ void check_state_size(const SpringModel& model, const State& state) {
   }
 }
 
+/// The particles whose position differs between `before` and `after` (3#P each), in order.
+void moved_particles(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                     std::vector<int>& moved) {
+  moved.clear();
+  for (Eigen::Index p = 0; p < before.size() / 3; ++p) {
+    if (before.segment<3>(3 * p) != after.segment<3>(3 * p)) moved.push_back(static_cast<int>(p));
+  }
+}
+
 }  // namespace
 
 const char* to_string(Integrator integrator) {
@@ -116,9 +125,18 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     workspace.obstacle_contacts =
         resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
                                   workspace.step_start_x, state, workspace.obstacle_holding_normal);
+    const bool both = params.self_collision.enabled && !params.obstacles.empty();
+    if (both) workspace.before_self_collision_x = state.x;
     workspace.self_collision = resolve_self_collisions(
         model, params.self_collision, params.time_step, workspace.step_start_x,
         workspace.obstacle_holding_normal, workspace.self_collision_pairs, state);
+    if (both) {  // a layer pushed by another must not enter an obstacle: obstacles have the last
+                 // word
+      moved_particles(workspace.before_self_collision_x, state.x,
+                      workspace.moved_by_self_collision);
+      resolve_obstacle_contacts_of(workspace.moved_by_self_collision, params.obstacles,
+                                   params.time_step, end_time_s, workspace.step_start_x, state);
+    }
   }
   state.time += params.time_step;
   if (!finite || !state.x.allFinite() || !state.v.allFinite()) return StepStatus::non_finite;

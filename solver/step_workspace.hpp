@@ -26,8 +26,10 @@ struct StepWorkspace {
   int obstacle_contacts = 0;     ///< particle-obstacle contacts resolved by the last step
   /// 3 x #P outward normal of the obstacle that held each particle in the last step, 0 if none
   Eigen::Matrix3Xd obstacle_holding_normal;
-  SelfCollisionReport self_collision;       ///< what self-collision handling did in the last step
-  SelfCollisionCache self_collision_pairs;  ///< broad-phase pairs kept between steps
+  SelfCollisionReport self_collision;        ///< what self-collision handling did in the last step
+  SelfCollisionCache self_collision_pairs;   ///< broad-phase pairs kept between steps
+  Eigen::VectorXd before_self_collision_x;   ///< 3#P, when there are obstacles too (m)
+  std::vector<int> moved_by_self_collision;  ///< particles it moved, checked against obstacles
 };
 
 }  // namespace tissu

@@ -92,6 +92,49 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
   return n;
 }
 
+/// Each obstacle placed once at each end of the step, for the step's queries.
+struct StepPlacements {
+  std::vector<ObstaclePlacement> before, after;
+  StepPlacements(const std::vector<Obstacle>& obstacles, double time_step_s, double time_s) {
+    for (const Obstacle& obstacle : obstacles) {
+      before.push_back(place(obstacle, time_s - time_step_s));
+      after.push_back(place(obstacle, time_s));
+    }
+  }
+};
+
+/// Every obstacle against particle p (see resolve_obstacle_contacts); returns how many touched it
+/// and sets `holding_normal` to the last one's outward normal.
+int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacements& placements,
+                     double time_step_s, double time_s, const Eigen::Vector3d& start,
+                     Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v,
+                     Eigen::Ref<Eigen::Vector3d> holding_normal) {
+  const auto& [before, after] = placements;
+  int touched = 0;
+  for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    if (const auto normal =
+            resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, x, v)) {
+      holding_normal = *normal;
+      ++touched;
+    }
+  }
+  if (touched == 0 || obstacles.size() < 2) return touched;
+  // Pushed out of one obstacle deep into another (a crease where two overlap: an armpit, the
+  // parts of a body mesh), it could be pushed back and forth without end: it goes back to where
+  // it started the step, carried by the surface it ended in, and moves with that surface. A
+  // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
+  // more than a thickness, is left where the last one put it (a hand holding cloth).
+  for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
+    if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
+    x = carry_with_surface(obstacles[k], before[k], after[k], start);
+    v = surface_velocity(obstacles[k], before[k], after[k],
+                         surface_distance(obstacles[k], after[k], x), x, time_s, time_step_s);
+    break;
+  }
+  return touched;
+}
+
 }  // namespace
 
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
@@ -100,43 +143,37 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
   const int particles = model.particle_count();
   holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
-  // each obstacle placed once at each end of the step for the step's queries
-  std::vector<ObstaclePlacement> before, after;
-  for (const Obstacle& obstacle : obstacles) {
-    before.push_back(place(obstacle, time_s - time_step_s));
-    after.push_back(place(obstacle, time_s));
-  }
+  const StepPlacements placements(obstacles, time_step_s, time_s);
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
-    const Eigen::Vector3d start = start_x.segment<3>(3 * p);
-    Eigen::Ref<Eigen::Vector3d> x = state.x.segment<3>(3 * p), v = state.v.segment<3>(3 * p);
-    int touched = 0;
-    for (std::size_t k = 0; k < obstacles.size(); ++k) {
-      if (const auto normal =
-              resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, x, v)) {
-        holding_normal.col(p) = *normal;
-        ++touched;
-      }
-    }
-    contacts += touched;
-    if (touched == 0 || obstacles.size() < 2) continue;
-    // Pushed out of one obstacle deep into another (a crease where two overlap: an armpit, the
-    // parts of a body mesh), it could be pushed back and forth without end: it goes back to where
-    // it started the step, carried by the surface it ended in, and moves with that surface. A
-    // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
-    // more than a thickness, is left where the last one put it (a hand holding cloth).
-    for (std::size_t k = 0; k < obstacles.size(); ++k) {
-      const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
-      if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
-      x = carry_with_surface(obstacles[k], before[k], after[k], start);
-      v = surface_velocity(obstacles[k], before[k], after[k],
-                           surface_distance(obstacles[k], after[k], x), x, time_s, time_step_s);
-      break;
-    }
+    contacts += resolve_particle(obstacles, placements, time_step_s, time_s,
+                                 start_x.segment<3>(3 * p), state.x.segment<3>(3 * p),
+                                 state.v.segment<3>(3 * p), holding_normal.col(p));
   }
   return contacts;
+}
+
+void resolve_obstacle_contacts_of(const std::vector<int>& moved,
+                                  const std::vector<Obstacle>& obstacles, double time_step_s,
+                                  double time_s, const Eigen::VectorXd& start_x, State& state) {
+  if (obstacles.empty() || moved.empty()) return;
+  const StepPlacements placements(obstacles, time_step_s, time_s);
+  const int count = static_cast<int>(moved.size());
+#pragma omp parallel for schedule(static) if (count >= min_parallel_items)
+  for (int k = 0; k < count; ++k) {
+    const int p = moved[k];
+    const Eigen::Vector3d x = state.x.segment<3>(3 * p);
+    bool inside = false;
+    for (std::size_t o = 0; o < obstacles.size() && !inside; ++o) {
+      inside = surface_distance(obstacles[o], placements.after[o], x).distance_m < 0.0;
+    }
+    if (!inside) continue;  // within an obstacle's thickness at most: left to the cloth's layers
+    Eigen::Vector3d unused_normal;
+    resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p),
+                     state.x.segment<3>(3 * p), state.v.segment<3>(3 * p), unused_normal);
+  }
 }
 
 }  // namespace tissu

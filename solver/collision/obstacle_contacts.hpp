@@ -39,4 +39,13 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
                               State& state, Eigen::Matrix3Xd& holding_normal);
 
+/// The same for those of the particles `moved` (indices, none pinned) that another response
+/// (self-collision) has moved inside an obstacle, beyond its surface: obstacles have the last word,
+/// as a cloth layer pushed by another cannot enter a body. One pushed only within an obstacle's
+/// thickness is left there: pushing it out again would move it through the layer that pushed it
+/// (two layers pressed on a floor). Each path is again measured from `start_x`, the step's start.
+void resolve_obstacle_contacts_of(const std::vector<int>& moved,
+                                  const std::vector<Obstacle>& obstacles, double time_step_s,
+                                  double time_s, const Eigen::VectorXd& start_x, State& state);
+
 }  // namespace tissu

@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "lib/scenario/scenario.hpp"
 #include "lib/simulation.hpp"
@@ -46,19 +47,24 @@ TEST(MovingBody, TheSkirtStaysOutsideTheWalkingBody) {
   EXPECT_GT(leg_contacts, 100) << "the legs never reached the skirt: the scene tests nothing";
 }
 
-TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
-  // 1.7 s of data/scenarios/tshirt_arms.json, the arms lowered from the T-pose to the body's sides
-  // by 1.6 s; one frame per step (the demo's time step, 1/240 s), so every step is checked
-  const Scenario scenario =
-      load_scenario(TISSU_DATA_DIR "/scenarios/tshirt_arms.json",
-                    {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=408",
-                     "render.enabled=false", "output.meshes=false", "output.viewer=false",
-                     "output.point_cache=false"});
-  ASSERT_EQ(scenario.solver.obstacles.size(), 3u);  // the torso and the two arms, each deforming
+/// How deep the shirt of data/scenarios/tshirt_arms.json gets into its animated body (a deforming
+/// mesh: the arms lowered from the T-pose to the body's sides, raised and lowered again, in 5 s,
+/// pressing the sleeves' two layers together under them) at any recorded frame, as the least
+/// signed distance plus thickness over the body's parts (m), run with `overrides`; and how many
+/// times a particle came within 1 cm of an arm.
+struct ShirtOnBody {
+  double deepest_m = std::numeric_limits<double>::infinity();
+  int arm_contacts = 0;
+};
+
+ShirtOnBody shirt_on_body(std::vector<std::string> overrides) {
+  overrides.insert(overrides.end(), {"render.enabled=false", "output.meshes=false",
+                                     "output.viewer=false", "output.point_cache=false"});
+  const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/tshirt_arms.json", overrides);
+  EXPECT_EQ(scenario.solver.obstacles.size(), 3u);  // the torso and the two arms, each deforming
   RunOptions options;
   options.output_dir = test::fresh_temp_dir("moving_body/tshirt");
-  double deepest_m = std::numeric_limits<double>::infinity();  // least distance + thickness
-  int arm_contacts = 0;  // particles within 1 cm of an arm, over the steps
+  ShirtOnBody found;
   options.on_surface = [&](int frame, const MaterialSurface& surface) {
     const double time_s = frame / scenario.frame_rate;
     for (std::size_t k = 0; k < scenario.solver.obstacles.size(); ++k) {
@@ -66,15 +72,33 @@ TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
       const ObstaclePlacement placed = place(part, time_s);
       for (const Eigen::Vector3d& x : surface.current.vertices) {
         const double d = surface_distance(part, placed, x).distance_m;
-        deepest_m = std::min(deepest_m, d + part.thickness_m);
-        arm_contacts += k > 0 && d < 0.01;
+        found.deepest_m = std::min(found.deepest_m, d + part.thickness_m);
+        found.arm_contacts += k > 0 && d < 0.01;
       }
     }
   };
   const RunResult result = run_scenario(scenario, options);
-  ASSERT_TRUE(result.ok) << result.failure;
-  EXPECT_GE(deepest_m, 0.0);  // signed distance >= -thickness after every step
-  EXPECT_GT(arm_contacts, 10000) << "the arms never carried the sleeves: the scene tests nothing";
+  EXPECT_TRUE(result.ok) << result.failure;
+  return found;
+}
+
+TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
+  // one frame per step (the demo's time step, 1/240 s), so every step of the 5 s is checked
+  const ShirtOnBody run = shirt_on_body(
+      {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=1200"});
+  EXPECT_GE(run.deepest_m, 0.0);  // signed distance >= -thickness after every step
+  EXPECT_GT(run.arm_contacts, 10000)
+      << "the arms never carried the sleeves: the scene tests nothing";
+}
+
+TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyInTheDemo) {
+  // the demo as shipped (30 frames/s, 8 steps each), every frame: the same physics as above, but
+  // a different round-off history, and in this one self-collision pushed sleeve cloth up to 4 cm
+  // into the rising arms until obstacles had the last word over it
+  const ShirtOnBody run = shirt_on_body({});
+  EXPECT_GE(run.deepest_m, 0.0);
+  EXPECT_GT(run.arm_contacts, 1000)
+      << "the arms never carried the sleeves: the scene tests nothing";
 }
 
 /// A 0.2 m x 0.4 m strip hanging from pins, its top 10 cm between two plates that close on it
