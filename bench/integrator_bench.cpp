@@ -86,6 +86,13 @@ int iterations_of(const SolverParams& params, const StepWorkspace& workspace) {
   }
 }
 
+/// Linear solves with the PD matrix in the last step: Newton's conjugate-gradient iterations
+/// (one preconditioner solve each), quasi-Newton's and PD's iterations.
+int pd_solves_of(const SolverParams& params, const StepWorkspace& workspace) {
+  return params.integrator == Integrator::newton ? workspace.newton.cg_iterations
+                                                 : iterations_of(params, workspace);
+}
+
 SolverParams sheet_params(const Method& method, int steps_per_frame) {
   SolverParams params;
   params.time_step = 1.0 / (30.0 * steps_per_frame);
@@ -103,6 +110,7 @@ struct SheetRun {
   State last;
   double wall_s = 0.0;
   long iterations = 0;
+  long pd_solves = 0;
   int unconverged = 0;
   bool finite = true;
 };
@@ -119,6 +127,7 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
       run.finite = status != StepStatus::non_finite;
       run.unconverged += status == StepStatus::not_converged;
       run.iterations += iterations_of(params, workspace);
+      run.pd_solves += pd_solves_of(params, workspace);
     }
     if (record) run.frames.push_back(run.last.x);
   }
@@ -208,6 +217,7 @@ void BM_HangingSheet(benchmark::State& bench, Method method) {
   bench.counters["max_stretch_pct"] = 100.0 * stretches.back();
   bench.counters["ms_per_frame"] = 1e3 * run.wall_s / sheet_frames;
   bench.counters["iterations_per_step"] = static_cast<double>(run.iterations) / sheet_frames;
+  bench.counters["pd_solves_per_step"] = static_cast<double>(run.pd_solves) / sheet_frames;
   bench.counters["unconverged"] = run.unconverged;
   bench.counters["particles"] = model.particle_count();
   // gaps to the converged trajectory at h and at h/16 (-1: no reference at this size)
@@ -325,6 +335,7 @@ TISSU_DEMO(drape, quasi_newton_x10, "simulation.integrator=\"quasi_newton\"",
 TISSU_DEMO(drape, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
            "simulation.substeps=1");
 TISSU_DEMO(drape, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
+TISSU_DEMO(drape, newton_x10, "simulation.integrator=\"newton\"", "simulation.substeps=10");
 
 }  // namespace
 }  // namespace tissu
