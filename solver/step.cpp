@@ -130,8 +130,8 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     workspace.self_collision = resolve_self_collisions(
         model, params.self_collision, params.time_step, workspace.step_start_x,
         workspace.obstacle_holding_normal, workspace.self_collision_pairs, state);
-    if (both) {  // a layer pushed by another must not enter an obstacle: obstacles have the last
-                 // word
+    // a layer pushed by another must not enter an obstacle: obstacles have the last word
+    if (both) {
       moved_particles(workspace.before_self_collision_x, state.x,
                       workspace.moved_by_self_collision);
       resolve_obstacle_contacts_of(workspace.moved_by_self_collision, params.obstacles,
