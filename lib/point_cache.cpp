@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -95,11 +97,14 @@ PointCache read_point_cache(const std::filesystem::path& file, std::uintmax_t ma
                "; expected a finite start and a positive, finite sample rate");
   }
   const std::size_t sample_bytes = std::size_t{12} * static_cast<std::size_t>(points);
-  const std::size_t needed = header_bytes + sample_bytes * static_cast<std::size_t>(samples);
-  if (bytes.size() < needed) {
+  // samples * sample_bytes can pass 2^64 (both counts up to 2^31 - 1): compared by division
+  if (static_cast<std::size_t>(samples) > (bytes.size() - header_bytes) / sample_bytes) {
+    std::ostringstream needed;  // in long double: what the counts ask can pass 2^64 bytes
+    needed << std::fixed << std::setprecision(0)
+           << header_bytes + static_cast<long double>(sample_bytes) * samples;
     throw fail("its header counts " + std::to_string(samples) + " samples of " +
-               std::to_string(points) + " points (" + std::to_string(needed) +
-               " bytes), but the file has " + std::to_string(bytes.size()) + " bytes");
+               std::to_string(points) + " points (" + needed.str() + " bytes), but the file has " +
+               std::to_string(bytes.size()) + " bytes");
   }
   cache.samples.resize(samples);
   for (std::int32_t k = 0; k < samples; ++k) {

@@ -24,7 +24,7 @@ elif [[ -n ${1:-} && ${1:-} != [a-z]* ]]; then
 fi
 targets=("$@")
 if ((${#targets[@]} == 0)); then
-  targets=(scenario mesh_obj mesh_ply mesh_off mesh_stl mesh_glb mesh_gltf)
+  targets=(scenario point_cache mesh_obj mesh_ply mesh_off mesh_stl mesh_glb mesh_gltf)
 fi
 bash scripts/setup.sh --fuzz
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release \

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,14 @@ TEST(PointCache, RefusesABrokenFileNamingWhatIsWrong) {
   EXPECT_THAT(
       error_of_edited_cache([](std::string& b) { b.resize(b.size() - 1); }),
       HasSubstr("its header counts 3 samples of 8 points (320 bytes), but the file has 319"));
+  // counts whose product of bytes passes 2^64 (12 (2^31 - 1)^2 = 3 2^64 - 12 2^32 + 12)
+  EXPECT_THAT(error_of_edited_cache([](std::string& b) {
+                const std::int32_t most = 0x7fffffff;
+                std::memcpy(&b[16], &most, 4);  // points
+                std::memcpy(&b[28], &most, 4);  // samples
+              }),
+              HasSubstr("its header counts 2147483647 samples of 2147483647 points "
+                        "(55340232169589047340 bytes), but the file has 320"));
   EXPECT_THAT(error_of_edited_cache([](std::string& b) { std::fill_n(&b[16], 4, '\xff'); }),
               HasSubstr("-1 points and 3 samples; expected at least one of each"));
   EXPECT_THAT(error_of_edited_cache([](std::string& b) {
