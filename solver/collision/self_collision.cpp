@@ -190,19 +190,24 @@ int move_zones_rigidly(const SpringModel& model, const Eigen::VectorXd& inverse_
     }
   }
   const int particles = model.particle_count();
-  // per zone (indexed by its root): mass, mass-weighted displacement, and whether it holds a
-  // particle that cannot move (pinned or held), in which case it stays where it started
+  // per zone (indexed by its root): mass, mass-weighted displacement, and the particles in it that
+  // cannot be moved (pinned or held by an obstacle), whose mean displacement the zone then takes:
+  // it stays where it started on a still pin, and moves with an obstacle that carried a particle
+  // (left at its start, a sleeve's zone would stay behind the arm that moves through it)
   std::vector<double> mass_kg(particles, 0.0);
-  std::vector<bool> immovable(particles, false);
-  std::vector<int> size(particles, 0);
-  Eigen::VectorXd weighted_displacement = Eigen::VectorXd::Zero(3 * particles);  // kg m
+  std::vector<int> size(particles, 0), immovable(particles, 0);
+  Eigen::VectorXd weighted_displacement = Eigen::VectorXd::Zero(3 * particles);   // kg m
+  Eigen::VectorXd immovable_displacement = Eigen::VectorXd::Zero(3 * particles);  // m, summed
   for (int p = 0; p < particles; ++p) {
     const int root = find_root(zone_parent, p);
+    const Eigen::Vector3d displacement = state.x.segment<3>(3 * p) - start_x.segment<3>(3 * p);
     mass_kg[root] += model.mass[p];
-    immovable[root] = immovable[root] || inverse_mass[p] == 0.0;
     ++size[root];
-    weighted_displacement.segment<3>(3 * root) +=
-        model.mass[p] * (state.x.segment<3>(3 * p) - start_x.segment<3>(3 * p));
+    weighted_displacement.segment<3>(3 * root) += model.mass[p] * displacement;
+    if (inverse_mass[p] == 0.0) {
+      ++immovable[root];
+      immovable_displacement.segment<3>(3 * root) += displacement;
+    }
   }
   int zone_particles = 0;
   for (int p = 0; p < particles; ++p) {
@@ -210,10 +215,10 @@ int move_zones_rigidly(const SpringModel& model, const Eigen::VectorXd& inverse_
     if (size[root] < 2) continue;  // not in any zone
     ++zone_particles;
     const Eigen::Vector3d d =
-        immovable[root]
-            ? Eigen::Vector3d::Zero()
+        immovable[root] > 0
+            ? Eigen::Vector3d(immovable_displacement.segment<3>(3 * root) / immovable[root])
             : Eigen::Vector3d(weighted_displacement.segment<3>(3 * root) / mass_kg[root]);
-    if (model.pinned[p]) continue;  // held particles go back to where they started
+    if (model.pinned[p]) continue;
     state.x.segment<3>(3 * p) = start_x.segment<3>(3 * p) + d;
     state.v.segment<3>(3 * p) = d / h;
   }

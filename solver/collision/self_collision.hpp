@@ -56,11 +56,12 @@ struct SelfCollisionReport {
 ///    move as one, at their mass-weighted mean displacement (translation only), until none cross.
 /// Impulses are mass-weighted and each particle's share is averaged over its pairs, so the
 /// result does not depend on the order of the pairs or on the thread count. Pinned particles act
-/// as infinitely heavy: they are not moved, and a zone holding one stays where it started. So do
-/// the particles an obstacle holds (`holding_normal`, 3 x #P: the obstacle's outward normal, 0
-/// where none holds; or empty), except that steps 1 and 2 may move them away from their obstacle,
-/// never into it: a layer that fell through another onto the floor within one step is lifted
-/// back above it.
+/// as infinitely heavy: they are not moved, and a zone holding some moves as they did in the step
+/// (their mean displacement: a still pin's zone stays where it started). So do the particles an
+/// obstacle holds (`holding_normal`, 3 x #P: the obstacle's outward normal, 0 where none holds;
+/// or empty), so that a zone an arm holds moves with the arm, except that steps 1 and 2 may move
+/// them away from their obstacle, never into it: a layer that fell through another onto the floor
+/// within one step is lifted back above it.
 /// Velocities change with positions (v += dx / h) except for the proximity push.
 SelfCollisionReport resolve_self_collisions(const SpringModel& model,
                                             const SelfCollisionOptions& options, double time_step_s,
