@@ -22,6 +22,12 @@ struct PairMotion {
 std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
                                             double thickness_m);
 
+/// True when c3 t^3 + c2 t^2 + c1 t + c0 cannot vanish on [0, 1]: its Bernstein coefficients there
+/// (c0, c0 + c1/3, c0 + 2 c1/3 + c2/3, c0 + c1 + c2 + c3) all have one sign, clear of round-off,
+/// and the cubic is a convex combination of them (the non-penetration filter of Tang, Manocha &
+/// Tong 2010, "Fast continuous collision detection using deforming non-penetration filters").
+bool cubic_keeps_its_sign_on_unit_interval(double c3, double c2, double c1, double c0);
+
 /// The first time in [0, 1] at which the four points are coplanar with the closest points of the
 /// pair within `tolerance_m` of each other (the pair touches), found from the roots of the cubic
 /// (x1 - x0) x (x2 - x0) . (x3 - x0) = 0 in t (Provot 1997; Bridson, Fedkiw & Anderson 2002).

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace tissu {
 namespace {
 
@@ -47,6 +49,29 @@ TEST(FirstImpact, TwoEdgesSweepingThroughEachOtherMeet) {
 
   m.start[2].x() = m.start[3].x() = 1.5;  // now it falls beyond the end of the first edge
   EXPECT_FALSE(first_impact(edge_edge, m, 1e-9));
+}
+
+TEST(CubicSignFilter, RulesOutOnlyCubicsThatKeepTheirSignOnTheUnitInterval) {
+  // the filter may pass a cubic without roots on [0, 1] to the root finder, never the reverse: a
+  // cubic it rules out must keep its sign at every sample of [0, 1]
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
+  int ruled_out = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double c3 = coefficient(random), c2 = coefficient(random), c1 = coefficient(random),
+                 c0 = coefficient(random);
+    if (!cubic_keeps_its_sign_on_unit_interval(c3, c2, c1, c0)) continue;
+    ++ruled_out;
+    for (int s = 0; s <= 1000; ++s) {
+      const double t = s / 1000.0;
+      ASSERT_GT((((c3 * t + c2) * t + c1) * t + c0) * c0, 0.0) << "k " << k << " t " << t;
+    }
+  }
+  EXPECT_GT(ruled_out, 5000);  // it does rule out most of them, or it would save nothing
+  // a cubic with a root inside, one with a root at the start, and one touching zero at t = 1/2
+  EXPECT_FALSE(cubic_keeps_its_sign_on_unit_interval(0.0, 0.0, 1.0, -0.5));
+  EXPECT_FALSE(cubic_keeps_its_sign_on_unit_interval(1.0, 1.0, 1.0, 0.0));
+  EXPECT_FALSE(cubic_keeps_its_sign_on_unit_interval(0.0, 1.0, -1.0, 0.25));
 }
 
 TEST(ProximityAtEnd, FindsPairsWithinTheThicknessOnly) {
