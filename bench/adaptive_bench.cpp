@@ -1,19 +1,29 @@
 // Adaptive refinement against uniform meshes, on three scenes: the curtain (curtain.json), a sheet
 // draped on a ball (drape_adaptive.json) and a flag in gusty wind (flag.json). Each adaptive scene
-// runs against its uniform twin at the finest level it reaches (curtain_uniform.json, drape.json,
-// flag_uniform.json) and against the coarse mesh it starts from (adaptive.enabled=false). Reports
+// runs against its uniform fine twin, at the finest level it may reach or finer
+// (curtain_uniform.json, drape.json, flag_uniform.json), against the coarse mesh it starts from
+// (adaptive.enabled=false) and against the uniform mesh one level finer than that (twice the cells
+// each way, bending springs scaled as docs/scenario.md "Stiffness across levels" says). Reports
 // wall time per simulated second (remeshing and recompiling included), particle counts, and how
-// far each shape is from the uniform fine one at the same material points. Results and the
-// machine: docs/benchmarks.md. To try other settings, put
-// --set overrides for the adaptive runs in TISSU_ADAPTIVE_SET, separated by spaces, e.g.
+// far each shape is from the uniform fine one at the same material points.
+//
+// The noise floor: the uniform fine run again with gravity changed by one part in 10^11. The gap
+// it opens is how far the fine run is from itself under a change far below any physical meaning
+// (contact, buckling and the solvers' tolerances amplify it); a gap below it says nothing.
+//
+// Results and the machine: docs/benchmarks.md; scripts/plot_adaptive.sh plots gap against time.
+// To try other settings, put --set overrides for the adaptive runs in TISSU_ADAPTIVE_SET,
+// separated by spaces, e.g.
 //   TISSU_ADAPTIVE_SET="adaptive.curvature=3 adaptive.every=2" adaptive_bench
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "bench/recorded_run.hpp"
@@ -43,7 +53,30 @@ bench::RecordedRun& fine_run(const std::string& scene) {
   return run;
 }
 
-enum class Mesh { uniform_fine, adaptive, uniform_coarse };
+enum class Mesh { uniform_fine, fine_nudged, adaptive, uniform_mid, uniform_coarse };
+
+/// The noise floor's change to gravity, relative.
+constexpr double gravity_nudge = 1e-11;
+
+/// The grid cloth of `scenario` with twice the cells each way, one level of refinement (two
+/// bisections) finer: the same pins (a side pinned at every n-th vertex, n > 1, at every 2n-th;
+/// one pinned whole stays whole, as refinement pins a clamped edge's midpoint), bending springs 4
+/// times as stiff per bisection, as refinement makes them.
+void one_level_finer(Scenario& scenario) {
+  if (!scenario.cloth.grid) throw std::runtime_error(scenario.name + ": not a grid cloth");
+  scenario.cloth.grid->cells_u *= 2;
+  scenario.cloth.grid->cells_v *= 2;
+  for (PinSelector& pins : scenario.pins) {
+    if (pins.kind == PinSelector::Kind::side && pins.every > 1) pins.every *= 2;
+    if (pins.kind == PinSelector::Kind::indices) {
+      throw std::runtime_error(scenario.name + ": pins by vertex index");
+    }
+  }
+  if (!scenario.springs.material) {  // a material's bending springs follow their own hinges
+    scenario.springs.bending.stiffness *= 16.0;
+    scenario.springs.bending.damping *= 16.0;
+  }
+}
 
 /// The overrides of TISSU_ADAPTIVE_SET, for the adaptive runs.
 std::vector<std::string> adaptive_overrides() {
@@ -56,13 +89,21 @@ std::vector<std::string> adaptive_overrides() {
 
 void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh) {
   const Scene& files = scenes().at(scene);
-  const std::string& file = mesh == Mesh::uniform_fine ? files.uniform_file : files.adaptive_file;
+  const bool fine = mesh == Mesh::uniform_fine || mesh == Mesh::fine_nudged;
+  const std::string& file = fine ? files.uniform_file : files.adaptive_file;
   std::vector<std::string> overrides;
+  std::function<void(Scenario&)> edit;
   if (mesh == Mesh::adaptive) overrides = adaptive_overrides();
-  if (mesh == Mesh::uniform_coarse) overrides.push_back("adaptive.enabled=false");
+  if (mesh == Mesh::uniform_mid || mesh == Mesh::uniform_coarse) {
+    overrides.push_back("adaptive.enabled=false");
+  }
+  if (mesh == Mesh::uniform_mid) edit = one_level_finer;
+  if (mesh == Mesh::fine_nudged) {
+    edit = [](Scenario& s) { s.solver.environment.gravity *= 1.0 + gravity_nudge; };
+  }
   bench::RecordedRun run;
   for (auto _ : state) {
-    run = bench::run_recorded(file, overrides);
+    run = bench::run_recorded(file, overrides, edit);
     state.SetIterationTime(run.wall_s);
   }
   if (mesh == Mesh::uniform_fine) fine_run(scene) = run;
@@ -85,7 +126,9 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
 void register_all() {
   for (const auto& [scene, files] : scenes()) {
     for (const auto& [name, mesh] :
-         {std::pair{"uniform_fine", Mesh::uniform_fine}, std::pair{"adaptive", Mesh::adaptive},
+         {std::pair{"uniform_fine", Mesh::uniform_fine},
+          std::pair{"fine_nudged", Mesh::fine_nudged}, std::pair{"adaptive", Mesh::adaptive},
+          std::pair{"uniform_mid", Mesh::uniform_mid},
           std::pair{"uniform_coarse", Mesh::uniform_coarse}}) {
       benchmark::RegisterBenchmark(("BM_Adaptivity/" + scene + "/" + name).c_str(), BM_Adaptivity,
                                    scene, mesh)

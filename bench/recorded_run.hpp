@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,13 +25,15 @@ struct RecordedRun {
   std::vector<MaterialSurface> shapes;  ///< every frames_between_shape_samples frames
 };
 
-/// Runs data/scenarios/<scenario_file> with `overrides`, without images or meshes; throws if the
-/// run fails.
+/// Runs data/scenarios/<scenario_file> with `overrides`, then `edit` when given, without images or
+/// meshes; throws if the run fails.
 inline RecordedRun run_recorded(const std::string& scenario_file,
-                                const std::vector<std::string>& overrides) {
+                                const std::vector<std::string>& overrides,
+                                const std::function<void(Scenario&)>& edit = {}) {
   std::vector<std::string> quiet = overrides;
   quiet.insert(quiet.end(), {"render.enabled=false", "output.meshes=false"});
-  const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, quiet);
+  Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, quiet);
+  if (edit) edit(scenario);
   RecordedRun run;
   RunOptions options;
   options.output_dir = std::filesystem::temp_directory_path() / "tissu_bench";

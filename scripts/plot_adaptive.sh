@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Runs bench/adaptive_bench and plots, for each scene, the shape gap to the uniform fine mesh
+# against wall time per simulated second: the uniform meshes (coarse, one level finer, fine), the
+# adaptive run, the noise floor (the fine run with gravity nudged by 1e-11) and issue 19's goal
+# (1 % at 5 times the fine run's speed, 3 times on the curtain). Writes docs/adaptive.png and keeps
+# the benchmark's CSV next to it as docs/adaptive.csv; `--plot-only` replots that CSV without
+# running the benchmark. Extra arguments go to the benchmark. Needs a Release build
+# (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). Three repetitions, the medians
+# plotted: about 8 minutes on one thread (OMP_NUM_THREADS=1, as docs/benchmarks.md quotes it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${TISSU_BUILD_DIR:-build/release}
+png=docs/adaptive.png
+csv=docs/adaptive.csv
+points=$(mktemp)
+trap 'rm -f "$points"' EXIT
+
+fail() { echo "plot_adaptive: $*" >&2; exit 1; }
+command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
+if [[ ${1:-} == --plot-only ]]; then
+  [[ $# -eq 1 ]] || fail "usage: $0 [--plot-only | benchmark arguments...]"
+else
+  bench=$build_dir/bench/adaptive_bench
+  [[ -x $bench ]] || fail "$bench not found; build it with scripts/build.sh"
+  "$bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$csv" --benchmark_out_format=csv "$@"
+fi
+[[ -f $csv ]] || fail "$csv not found; run without --plot-only first"
+
+# "BM_Adaptivity/<scene>/<run>/..." rows (the medians when repeated) -> "<scene> <run> <wall s per
+# simulated s> <mean gap %>"
+awk -F, '
+  { gsub(/"/, "") }
+  /^name,/ { for (c = 1; c <= NF; ++c) column[$c] = c; next }
+  column["name"] && $1 ~ /^BM_Adaptivity\// && $1 ~ /(manual_time|_median)$/ {
+    split($1, part, "/")
+    print part[2], part[3], $column["wall_s_per_sim_s"], $column["mean_gap_pct"]
+  }' "$csv" >"$points"
+for scene in curtain drape flag; do
+  grep -q "^$scene uniform_fine " "$points" || fail "$csv has no uniform_fine run of the $scene"
+done
+
+gnuplot <<EOF
+set terminal pngcairo size 1500,600 font ",11"
+set output "$png"
+set multiplot layout 1,3 title "Adaptive against uniform meshes: shape gap to the uniform fine mesh against wall time; the goal is the green box (docs/benchmarks.md)"
+set logscale x
+set xlabel "wall time per simulated second (s)"
+set ylabel "mean shape gap (% of the rest diagonal)"
+set yrange [0:*]
+set grid
+set key below horizontal font ",9" noenhanced
+scenes = "curtain drape flag"
+goals = "3 5 5"
+do for [k = 1:3] {
+  scene = word(scenes, k)
+  goal = word(goals, k) + 0
+  fine = real(system(sprintf("awk '\$1 == \"%s\" && \$2 == \"uniform_fine\" { print \$3 }' $points", scene)))
+  floor = real(system(sprintf("awk '\$1 == \"%s\" && \$2 == \"fine_nudged\" { print \$4 }' $points", scene)))
+  set title sprintf("%s: goal %g x faster than uniform fine at a gap <= 1 %%", scene, goal)
+  set object 1 rectangle from graph 0, graph 0 to first fine / goal, first 1 \
+    fillcolor rgb "#d8f0d8" fillstyle solid noborder behind
+  plot sprintf("< awk '\$1 == \"%s\" && \$2 ~ /^uniform_/' $points | sort -g -k3", scene) \
+         using 3:4 with linespoints pointtype 7 linecolor "gray30" title "uniform (coarse, mid, fine)", \
+       "$points" using (strcol(1) eq scene && strcol(2) eq "adaptive" ? \$3 : 1/0):4 \
+         with points pointtype 9 pointsize 2.5 linecolor "red" title "adaptive", \
+       floor with lines dashtype 3 linewidth 2 linecolor "blue" title "noise floor (fine, g nudged 1e-11)"
+  unset object 1
+}
+unset multiplot
+EOF
+echo "wrote $png and $csv"
