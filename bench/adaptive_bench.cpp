@@ -7,9 +7,12 @@
 // wall time per simulated second (remeshing and recompiling included), particle counts, and how
 // far each shape is from the uniform fine one at the same material points.
 //
-// The noise floor: the uniform fine run again with gravity changed by one part in 10^11. The gap
-// it opens is how far the fine run is from itself under a change far below any physical meaning
-// (contact, buckling and the solvers' tolerances amplify it); a gap below it says nothing.
+// Two floors under the gaps, from the uniform fine run again:
+// - the noise floor, with gravity changed by one part in 10^11: how far the fine run is from
+//   itself under a change far below any physical meaning (contact, buckling and the solvers'
+//   tolerances amplify it); a gap below it says nothing;
+// - the time-step floor, at half its time step: how far the fine run is from its own motion's
+//   time discretisation; a mesh's gap below it is smaller than the reference's own error.
 //
 // Results and the machine: docs/benchmarks.md; scripts/plot_adaptive.sh plots gap against time.
 // To try other settings, put --set overrides for the adaptive runs in TISSU_ADAPTIVE_SET,
@@ -53,7 +56,14 @@ bench::RecordedRun& fine_run(const std::string& scene) {
   return run;
 }
 
-enum class Mesh { uniform_fine, fine_nudged, adaptive, uniform_mid, uniform_coarse };
+enum class Mesh {
+  uniform_fine,
+  fine_nudged,
+  fine_half_step,
+  adaptive,
+  uniform_mid,
+  uniform_coarse
+};
 
 /// The noise floor's change to gravity, relative.
 constexpr double gravity_nudge = 1e-11;
@@ -89,7 +99,8 @@ std::vector<std::string> adaptive_overrides() {
 
 void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh) {
   const Scene& files = scenes().at(scene);
-  const bool fine = mesh == Mesh::uniform_fine || mesh == Mesh::fine_nudged;
+  const bool fine =
+      mesh == Mesh::uniform_fine || mesh == Mesh::fine_nudged || mesh == Mesh::fine_half_step;
   const std::string& file = fine ? files.uniform_file : files.adaptive_file;
   std::vector<std::string> overrides;
   std::function<void(Scenario&)> edit;
@@ -100,6 +111,12 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   if (mesh == Mesh::uniform_mid) edit = one_level_finer;
   if (mesh == Mesh::fine_nudged) {
     edit = [](Scenario& s) { s.solver.environment.gravity *= 1.0 + gravity_nudge; };
+  }
+  if (mesh == Mesh::fine_half_step) {
+    edit = [](Scenario& s) {
+      s.substeps *= 2;
+      s.solver.time_step /= 2.0;
+    };
   }
   bench::RecordedRun run;
   for (auto _ : state) {
@@ -127,7 +144,8 @@ void register_all() {
   for (const auto& [scene, files] : scenes()) {
     for (const auto& [name, mesh] :
          {std::pair{"uniform_fine", Mesh::uniform_fine},
-          std::pair{"fine_nudged", Mesh::fine_nudged}, std::pair{"adaptive", Mesh::adaptive},
+          std::pair{"fine_nudged", Mesh::fine_nudged},
+          std::pair{"fine_half_step", Mesh::fine_half_step}, std::pair{"adaptive", Mesh::adaptive},
           std::pair{"uniform_mid", Mesh::uniform_mid},
           std::pair{"uniform_coarse", Mesh::uniform_coarse}}) {
       benchmark::RegisterBenchmark(("BM_Adaptivity/" + scene + "/" + name).c_str(), BM_Adaptivity,
