@@ -12,24 +12,26 @@ namespace {
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
 /// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
 /// sphere tracing (Hart 1996) along the segment, each advance by the distance to the surface, which
-/// cannot overshoot it. The obstacle is taken where `placement` puts it, at the end of the step.
+/// cannot overshoot it. The obstacle is taken where `placement` puts it, at the end of the step;
+/// `from_distance_m` is its signed distance from `from` there.
 std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
                                                      const Eigen::Vector3d& from,
                                                      const Eigen::Vector3d& to,
-                                                     const ObstaclePlacement& placement) {
+                                                     const ObstaclePlacement& placement,
+                                                     double from_distance_m) {
   const double length_m = (to - from).norm();
   // a particle that starts in contact, at the thickness to round-off (where the last step left
   // it) or closer, and ends clear is leaving: the end-position test handles its contacts
-  const double start_clearance_m =
-      surface_distance(obstacle, placement, from).distance_m - obstacle.thickness_m;
-  if (!(length_m > 0.0) || start_clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
+  double clearance_m = from_distance_m - obstacle.thickness_m;
+  if (!(length_m > 0.0) || clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
     return std::nullopt;
   }
   double travelled = 0.0;  // fraction of the path
   for (int step = 0; step < 64; ++step) {
     const Eigen::Vector3d here = from + travelled * (to - from);
-    const double clearance_m =
-        surface_distance(obstacle, placement, here).distance_m - obstacle.thickness_m;
+    if (step > 0) {
+      clearance_m = surface_distance(obstacle, placement, here).distance_m - obstacle.thickness_m;
+    }
     if (clearance_m <= 1e-9 * length_m) return here;
     travelled += clearance_m / length_m;
     if (travelled >= 1.0) return std::nullopt;
@@ -48,16 +50,16 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
   const bool moves = obstacle.motion.moves() || obstacle.animation;
   const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
   SurfaceDistance surface = surface_distance(obstacle, after, x);
+  // A signed distance changes by at most the distance moved (it is 1-Lipschitz: its sign flips on
+  // the surface only), so a path shorter than the end's clearance never came within the thickness.
+  if (surface.distance_m - obstacle.thickness_m > (x - from).norm()) return std::nullopt;
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
+  const SurfaceDistance at_start = surface_distance(obstacle, after, from);
   // ending near the far side of a part thinner than the step means it went through
-  SurfaceDistance at_start;
-  bool crossed = false;
-  if (ends_near) {
-    at_start = surface_distance(obstacle, after, from);
-    crossed = at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
-  }
+  const bool crossed =
+      ends_near && at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
   if (!ends_near || crossed) {
-    if (const auto contact = first_contact_on_path(obstacle, from, x, after)) {
+    if (const auto contact = first_contact_on_path(obstacle, from, x, after, at_start.distance_m)) {
       x = *contact;  // where the path first came within the thickness, on its own side
       surface = surface_distance(obstacle, after, x);
     } else if (!ends_near) {
