@@ -37,7 +37,9 @@ awk -F, '
     print part[2], part[3], $column["wall_s_per_sim_s"], $column["mean_gap_pct"]
   }' "$csv" >"$points"
 for scene in curtain drape flag; do
-  grep -q "^$scene uniform_fine " "$points" || fail "$csv has no uniform_fine run of the $scene"
+  for run in uniform_fine fine_nudged fine_half_step; do
+    grep -q "^$scene $run " "$points" || fail "$csv has no $run run of the $scene"
+  done
 done
 
 gnuplot <<EOF

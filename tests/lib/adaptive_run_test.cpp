@@ -154,8 +154,7 @@ TEST(AdaptiveRun, TheCurtainDemoRefinesItsFoldsAndKeepsItsMass) {
                                  std::greater<int>()) != stats.particles.end());
 
   // cells in folds tighter than 20 cm in radius are smaller than cells where it is nearly flat (the
-  // pleated curtain folds almost everywhere, and the flat cells lie between folds: on average they
-  // are 1.5 times as large at frame 20)
+  // pleated curtain refines along its fold crests; the flat cells lie between them)
   const std::vector<double> bend = sharpest_bend_per_m(last);
   double folded_m2 = 0.0, flat_m2 = 0.0;
   int folded = 0, flat = 0;
