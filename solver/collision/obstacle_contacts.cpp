@@ -39,6 +39,19 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   return from + travelled * (to - from);  // still creeping along the surface: call it a contact
 }
 
+/// How far carry_with_surface() can move `start` over a step of `h` (m), without its closest-point
+/// query: the rigid motion's displacement of `start`, plus what the animation moves any point of
+/// the surface in the step (at most its fastest speed times h; with room for round-off and for the
+/// animation's instants within 1e-9 s counting as one).
+double carry_bound_m(const Obstacle& obstacle, const ObstaclePlacement& before,
+                     const ObstaclePlacement& after, double h, const Eigen::Vector3d& start) {
+  double bound_m = (after.pose.apply(before.pose.apply_inverse(start)) - start).norm();
+  if (obstacle.animation && before.surface != after.surface) {
+    bound_m += (1.0 + 1e-9) * obstacle.animation->fastest_speed_m_per_s() * (h + 2e-9);
+  }
+  return bound_m;
+}
+
 /// One obstacle, at `before` and `after` at the start and the end (`time_s`) of the step, against
 /// one particle that moved from `start` during the step: the outward normal where they touched, or
 /// nothing. The particle's path is measured relative to the obstacle, from where `start` would be
@@ -47,12 +60,18 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
                                        const ObstaclePlacement& after, double h, double time_s,
                                        const Eigen::Vector3d& start, Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
-  const bool moves = obstacle.motion.moves() || obstacle.animation;
-  const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
   SurfaceDistance surface = surface_distance(obstacle, after, x);
   // A signed distance changes by at most the distance moved (it is 1-Lipschitz: its sign flips on
-  // the surface only), so a path shorter than the end's clearance never came within the thickness.
-  if (surface.distance_m - obstacle.thickness_m > (x - from).norm()) return std::nullopt;
+  // the surface only), so a path shorter than the end's clearance never came within the thickness:
+  // first against a bound on the path's length, then against the path itself.
+  const double end_clearance_m = surface.distance_m - obstacle.thickness_m;
+  const bool moves = obstacle.motion.moves() || obstacle.animation;
+  if (moves &&
+      end_clearance_m > (x - start).norm() + carry_bound_m(obstacle, before, after, h, start)) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
+  if (end_clearance_m > (x - from).norm()) return std::nullopt;
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
   const SurfaceDistance at_start = surface_distance(obstacle, after, from);
   // ending near the far side of a part thinner than the step means it went through
