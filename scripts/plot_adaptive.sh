@@ -2,11 +2,12 @@
 # Runs bench/adaptive_bench and plots, for each scene, the shape gap to the uniform fine mesh
 # against wall time per simulated second: the uniform meshes (coarse, one level finer, fine), the
 # adaptive run, the two floors (the fine run with gravity nudged by 1e-11, and at half its time
-# step) and issue 19's goal (1 % at 5 times the fine run's speed, 3 times on the curtain). Writes docs/adaptive.png and keeps
-# the benchmark's CSV next to it as docs/adaptive.csv; `--plot-only` replots that CSV without
-# running the benchmark. Extra arguments go to the benchmark. Needs a Release build
-# (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). Three repetitions, the medians
-# plotted: about 8 minutes on one thread (OMP_NUM_THREADS=1, as docs/benchmarks.md quotes it).
+# step) and issue 19's goal (1 % at 5 times the fine run's speed, 3 times on the curtain). Writes
+# docs/adaptive.png and keeps the benchmark's CSV next to it as docs/adaptive.csv; `--plot-only`
+# replots that CSV without running the benchmark. Extra arguments go to the benchmark. Needs a
+# Release build (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). Three repetitions,
+# the medians plotted: about 13 minutes on one thread (OMP_NUM_THREADS=1, as docs/benchmarks.md
+# quotes it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${TISSU_BUILD_DIR:-build/release}
@@ -54,12 +55,15 @@ set grid
 set key below horizontal font ",9" noenhanced
 scenes = "curtain drape flag"
 goals = "3 5 5"
+# column 3 (wall time) or 4 (gap) of a scene's run
+run_value(scene, run, column) = real(system(sprintf( \
+  "awk '\$1 == \"%s\" && \$2 == \"%s\" { print \$%d }' $points", scene, run, column)))
 do for [k = 1:3] {
   scene = word(scenes, k)
   goal = word(goals, k) + 0
-  fine = real(system(sprintf("awk '\$1 == \"%s\" && \$2 == \"uniform_fine\" { print \$3 }' $points", scene)))
-  floor = real(system(sprintf("awk '\$1 == \"%s\" && \$2 == \"fine_nudged\" { print \$4 }' $points", scene)))
-  half_step = real(system(sprintf("awk '\$1 == \"%s\" && \$2 == \"fine_half_step\" { print \$4 }' $points", scene)))
+  fine = run_value(scene, "uniform_fine", 3)
+  floor = run_value(scene, "fine_nudged", 4)
+  half_step = run_value(scene, "fine_half_step", 4)
   set title sprintf("%s: goal %g x faster than uniform fine at a gap <= 1 %%", scene, goal)
   set object 1 rectangle from graph 0, graph 0 to first fine / goal, first 1 \
     fillcolor rgb "#d8f0d8" fillstyle solid noborder behind

@@ -97,8 +97,7 @@ std::vector<double> cubic_roots_in_unit_interval(double c3, double c2, double c1
 }  // namespace
 
 bool cubic_keeps_its_sign_on_unit_interval(double c3, double c2, double c1, double c0) {
-  const double b0 = c0, b1 = c0 + c1 / 3.0, b2 = c0 + (2.0 * c1 + c2) / 3.0,
-               b3 = c0 + c1 + c2 + c3;
+  const double b0 = c0, b1 = c0 + c1 / 3.0, b2 = c0 + (2.0 * c1 + c2) / 3.0, b3 = c0 + c1 + c2 + c3;
   // the coefficients' rounding errors are a few ulps of the largest term
   const double margin = 1e-12 * (std::abs(c0) + std::abs(c1) + std::abs(c2) + std::abs(c3));
   return std::min({b0, b1, b2, b3}) > margin || std::max({b0, b1, b2, b3}) < -margin;
