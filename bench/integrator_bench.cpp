@@ -5,9 +5,10 @@
 // drag, released horizontal from rest; h = 1/30 s, one step per frame, `sheet_frames` frames.
 // Counters: ms_per_frame (one run of all the frames; --benchmark_repetitions for medians),
 // iterations per step (Newton or L-BFGS iterations, PD local/global iterations, CG iterations of
-// implicit_euler), unconverged steps, lowest point after the last frame (m, the pins at 0) and
-// the structural springs' stretch (%): median, 90th percentile and largest (at the two pinned
-// corners, which carry the whole weight: it grows with the resolution); and the gap to the
+// implicit_euler), preconditioner solves per step (solves with the PD matrix or multigrid V-cycles:
+// what sets a step's price), unconverged steps, lowest point after the last frame (m, the pins at
+// 0) and the structural springs' stretch (%): median, 90th percentile and largest (at the two
+// pinned corners, which carry the whole weight: it grows with the resolution); and the gap to the
 // converged trajectory (Newton to a tight tolerance, run once per size), mean and largest
 // particle distance over the 90 frames in % of the sheet's side: gap_* at the same h (how far
 // the method is from the backward-Euler trajectory it claims to follow) and gap_h16_* at h/16
@@ -51,6 +52,7 @@ struct Method {
   Integrator integrator;
   PdGlobalSolver global_solver = PdGlobalSolver::direct;
   double tolerance = 0.0;  ///< Newton's or quasi-Newton's tolerance; 0: the default
+  NewtonPreconditioner preconditioner = NewtonPreconditioner::multigrid;
 };
 
 CompiledCloth hanging_sheet(int particles_per_side) {
@@ -86,9 +88,9 @@ int iterations_of(const SolverParams& params, const StepWorkspace& workspace) {
   }
 }
 
-/// Linear solves with the PD matrix in the last step: Newton's conjugate-gradient iterations
-/// (one preconditioner solve each), quasi-Newton's and PD's iterations.
-int pd_solves_of(const SolverParams& params, const StepWorkspace& workspace) {
+/// Preconditioner solves in the last step (a solve with the PD matrix, or a multigrid V-cycle):
+/// Newton's conjugate-gradient iterations, quasi-Newton's and PD's iterations.
+int preconditioner_solves_of(const SolverParams& params, const StepWorkspace& workspace) {
   return params.integrator == Integrator::newton ? workspace.newton.cg_iterations
                                                  : iterations_of(params, workspace);
 }
@@ -98,6 +100,7 @@ SolverParams sheet_params(const Method& method, int steps_per_frame) {
   params.time_step = 1.0 / (30.0 * steps_per_frame);
   params.integrator = method.integrator;
   params.pd.global_solver = method.global_solver;
+  params.newton.preconditioner = method.preconditioner;
   if (method.tolerance > 0.0) {
     params.newton.tolerance = params.quasi_newton.tolerance = method.tolerance;
   }
@@ -110,7 +113,7 @@ struct SheetRun {
   State last;
   double wall_s = 0.0;
   long iterations = 0;
-  long pd_solves = 0;
+  long preconditioner_solves = 0;
   int unconverged = 0;
   bool finite = true;
 };
@@ -127,7 +130,7 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
       run.finite = status != StepStatus::non_finite;
       run.unconverged += status == StepStatus::not_converged;
       run.iterations += iterations_of(params, workspace);
-      run.pd_solves += pd_solves_of(params, workspace);
+      run.preconditioner_solves += preconditioner_solves_of(params, workspace);
     }
     if (record) run.frames.push_back(run.last.x);
   }
@@ -217,7 +220,8 @@ void BM_HangingSheet(benchmark::State& bench, Method method) {
   bench.counters["max_stretch_pct"] = 100.0 * stretches.back();
   bench.counters["ms_per_frame"] = 1e3 * run.wall_s / sheet_frames;
   bench.counters["iterations_per_step"] = static_cast<double>(run.iterations) / sheet_frames;
-  bench.counters["pd_solves_per_step"] = static_cast<double>(run.pd_solves) / sheet_frames;
+  bench.counters["preconditioner_solves_per_step"] =
+      static_cast<double>(run.preconditioner_solves) / sheet_frames;
   bench.counters["unconverged"] = run.unconverged;
   bench.counters["particles"] = model.particle_count();
   // gaps to the converged trajectory at h and at h/16 (-1: no reference at this size)
@@ -230,7 +234,7 @@ void BM_HangingSheet(benchmark::State& bench, Method method) {
 }
 
 void sheet_sizes(benchmark::internal::Benchmark* b) {
-  b->Arg(41)->Arg(81)->Arg(128)->Arg(256);
+  b->Arg(41)->Arg(81)->Arg(128)->Arg(256)->Arg(512);
   b->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 
@@ -248,6 +252,10 @@ BENCHMARK_CAPTURE(BM_HangingSheet, pd_colored_gauss_seidel,
                   Method{Integrator::projective_dynamics, PdGlobalSolver::colored_gauss_seidel})
     ->Apply(sheet_sizes);
 BENCHMARK_CAPTURE(BM_HangingSheet, newton, Method{Integrator::newton})->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, newton_pd_matrix,  // preconditioned by the PD matrix
+                  Method{Integrator::newton, PdGlobalSolver::direct, 0.0,
+                         NewtonPreconditioner::pd_matrix})
+    ->Apply(sheet_sizes);
 BENCHMARK_CAPTURE(BM_HangingSheet, newton_tight,  // tolerance 3e-3
                   Method{Integrator::newton, PdGlobalSolver::direct, 3e-3})
     ->Apply(sheet_sizes);

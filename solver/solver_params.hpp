@@ -112,6 +112,13 @@ struct QuasiNewtonOptions {
   int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
 };
 
+/// Preconditioner of the conjugate gradient inside each Newton iteration.
+enum class NewtonPreconditioner {
+  multigrid,  ///< one V-cycle of aggregation multigrid on the Hessian itself (linear cost)
+  pd_matrix,  ///< a solve with the prefactorised PD matrix M/h^2 + L (isotropic: blind to how
+              ///< much softer a taut cloth is across its springs than along them)
+};
+
 /// Minimisation of backward Euler's incremental potential by the Newton integrator.
 struct NewtonOptions {
   /// the step stops once its last Newton correction max_i |dx_i| is at most tolerance times the
@@ -121,6 +128,9 @@ struct NewtonOptions {
   double tolerance = 1e-2;
   int max_iterations = 20;      ///< a step that has not met the tolerance by then is not_converged
   int cg_max_iterations = 200;  ///< conjugate gradient iterations per Newton iteration, at most
+  /// multigrid: 1.5 to 2.6 times faster on the stiff hanging sheet from 81 x 81 to 256 x 256
+  /// particles (docs/benchmarks.md, "Newton preconditioned by multigrid")
+  NewtonPreconditioner preconditioner = NewtonPreconditioner::multigrid;
 };
 
 struct SolverParams {

@@ -75,6 +75,16 @@ const char* to_string(PdGlobalSolver solver) {
   return "unknown";
 }
 
+const char* to_string(NewtonPreconditioner preconditioner) {
+  switch (preconditioner) {
+    case NewtonPreconditioner::multigrid:
+      return "multigrid";
+    case NewtonPreconditioner::pd_matrix:
+      return "pd_matrix";
+  }
+  return "unknown";
+}
+
 const char* to_string(StepStatus status) {
   switch (status) {
     case StepStatus::ok:

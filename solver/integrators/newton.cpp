@@ -51,16 +51,26 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
   if (coupled) add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.hessian);
 }
 
+// preconditioned = an approximation of H^-1 residual (zero on pinned particles)
+void precondition(NewtonPreconditioner preconditioner, NewtonWorkspace& newton) {
+  if (preconditioner == NewtonPreconditioner::multigrid) {
+    newton.multigrid.apply(newton.residual, newton.common.preconditioned);
+  } else {
+    newton.common.pd_matrix.solve(newton.common.system, newton.residual,
+                                  newton.common.preconditioned);
+  }
+}
+
 // correction ~ -H^-1 gradient by the preconditioned conjugate gradient from 0, to a residual of
 // forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
 // curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
 // the preconditioned gradient if that is nothing yet.
-int solve_newton_system(NewtonWorkspace& newton, double forcing_term, int max_iterations) {
+int solve_newton_system(NewtonPreconditioner preconditioner, NewtonWorkspace& newton,
+                        double forcing_term, int max_iterations) {
   const Eigen::Index dofs = newton.common.gradient.size();
   newton.correction.setZero(dofs);
   newton.residual = -newton.common.gradient;
-  newton.common.pd_matrix.solve(newton.common.system, newton.residual,
-                                newton.common.preconditioned);
+  precondition(preconditioner, newton);
   newton.search = newton.common.preconditioned;
   double rz = newton.residual.dot(newton.common.preconditioned);
   const double target_n = forcing_term * newton.common.gradient.norm();
@@ -75,8 +85,7 @@ int solve_newton_system(NewtonWorkspace& newton, double forcing_term, int max_it
     const double step = rz / curvature;
     newton.correction += step * newton.search;
     newton.residual -= step * newton.hessian_search;
-    newton.common.pd_matrix.solve(newton.common.system, newton.residual,
-                                  newton.common.preconditioned);
+    precondition(preconditioner, newton);
     const double rz_next = newton.residual.dot(newton.common.preconditioned);
     newton.search = newton.common.preconditioned + (rz_next / rz) * newton.search;
     rz = rz_next;
@@ -96,7 +105,9 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
 
   StepPotential potential;
   double energy_j = 0.0;
-  if (!start_step_minimisation(model, params, state, newton.common, potential, energy_j)) {
+  const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
+  if (!start_step_minimisation(model, params, state, newton.common, potential, energy_j,
+                               pd_preconditioner)) {
     return StepStatus::non_finite;
   }
   const double force_scale_n = step_force_scale(model, potential);
@@ -107,10 +118,12 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
   bool converged = first_gradient_n == 0.0;
   while (!converged && newton.iterations < options.max_iterations) {
     assemble_hessian(model, potential, newton.common.x, newton);
+    if (!pd_preconditioner) newton.multigrid.set_operator(newton.hessian, model.identity);
     const double forcing_term =
         std::min(max_forcing_term, std::sqrt(relative_residual(newton.common.gradient.norm(),
                                                                force_scale_n, first_gradient_n)));
-    newton.cg_iterations += solve_newton_system(newton, forcing_term, options.cg_max_iterations);
+    newton.cg_iterations += solve_newton_system(options.preconditioner, newton, forcing_term,
+                                                options.cg_max_iterations);
     double trial_energy_j = energy_j;
     if (!backtracking_line_search(model, potential, newton.common.x, newton.common.gradient,
                                   energy_j, newton.correction, newton.common.potential,

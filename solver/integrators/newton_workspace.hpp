@@ -8,6 +8,7 @@
 
 #include "solver/forces/spring_block_matrix.hpp"
 #include "solver/integrators/minimisation_workspace.hpp"
+#include "solver/multigrid/aggregation_multigrid.hpp"
 
 namespace tissu {
 
@@ -21,6 +22,7 @@ struct NewtonWorkspace {
   std::vector<Eigen::Matrix3d> spring_blocks;  ///< #S Hessian block of each spring (N/m)
   Eigen::VectorXd diagonal;                    ///< #P m_i (1/h^2 + c/h) (kg/s^2)
   Eigen::SparseMatrix<double, Eigen::RowMajor> hessian;  ///< 3#P x 3#P (N/m)
+  AggregationMultigrid multigrid;
   Eigen::VectorXd correction;      ///< 3#P the Newton step dx, H dx = -grad E (m)
   Eigen::VectorXd residual;        ///< 3#P conjugate gradient residual (N)
   Eigen::VectorXd search;          ///< 3#P conjugate gradient direction (m)
