@@ -76,7 +76,7 @@ int solve_newton_system(NewtonPreconditioner preconditioner, NewtonWorkspace& ne
   const double target_n = forcing_term * newton.common.gradient.norm();
   int iteration = 0;
   while (iteration < max_iterations && newton.residual.norm() > target_n) {
-    newton.hessian_search.noalias() = newton.hessian * newton.search;
+    block_product(newton.hessian, newton.search, newton.hessian_search);
     const double curvature = newton.search.dot(newton.hessian_search);
     if (!(curvature > 0.0)) {
       if (iteration == 0) newton.correction = newton.search;

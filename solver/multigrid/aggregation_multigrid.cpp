@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <stdexcept>
 
 #include "solver/parallel.hpp"
 
@@ -10,11 +11,13 @@ namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-// Measured on the stiff hanging sheet at 81 x 81 (docs/benchmarks.md): one sweep before and after
-// the coarse level, 53 ms per frame; two, 79 ms (fewer iterations, each dearer); three, 97 ms.
+// Chosen on the stiff hanging sheet at 81 x 81 (docs/benchmarks.md, "Newton preconditioned by
+// multigrid"): one sweep before and after the coarse level ran in 53 ms per frame, two in 79 ms
+// (fewer iterations, each dearer), three in 97 ms (omega 0.6); omega 0.5, 0.6, 0.7, 0.8 and 0.9
+// took 40.6, 32.1, 33.7, 28.1 and 31.5 V-cycles per step.
 constexpr int coarsest_nodes = 64;      // a level this small is solved exactly
 constexpr int smoothing_sweeps = 1;     // block-Jacobi sweeps before and after the coarse level
-constexpr double jacobi_damping = 0.6;  // omega of the damped block-Jacobi smoother
+constexpr double jacobi_damping = 0.8;  // omega of the damped block-Jacobi smoother
 constexpr int unassigned = -2;
 constexpr int left_out = -1;
 
@@ -117,17 +120,22 @@ void galerkin_product(const RowMatrix& fine, const std::vector<int>& coarse_entr
   }
 }
 
+// the inverse of each node's diagonal block of a matrix of full 3x3 blocks
 void invert_diagonal_blocks(const RowMatrix& matrix, Eigen::Matrix3Xd& inverse) {
   const int nodes = static_cast<int>(matrix.rows() / 3);
   inverse.resize(3, 3 * nodes);
+  const int* outer = matrix.outerIndexPtr();
+  const int* inner = matrix.innerIndexPtr();
+  const double* values = matrix.valuePtr();
 #pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
   for (int i = 0; i < nodes; ++i) {
-    Eigen::Matrix3d block = Eigen::Matrix3d::Zero();
+    const int first = outer[3 * i];
+    const int length = outer[3 * i + 1] - first;
+    const int k = static_cast<int>(std::lower_bound(inner + first, inner + first + length, 3 * i) -
+                                   (inner + first));
+    Eigen::Matrix3d block;
     for (int d = 0; d < 3; ++d) {
-      for (RowMatrix::InnerIterator it(matrix, 3 * i + d); it; ++it) {
-        const int column = static_cast<int>(it.col()) - 3 * i;
-        if (column >= 0 && column < 3) block(d, column) = it.value();
-      }
+      block.row(d) = Eigen::Map<const Eigen::RowVector3d>(values + first + d * length + k);
     }
     inverse.block<3, 3>(0, 3 * i) = block.inverse();
   }
@@ -136,7 +144,7 @@ void invert_diagonal_blocks(const RowMatrix& matrix, Eigen::Matrix3Xd& inverse) 
 // x += omega D^-1 (b - A x), with r = b - A x left in `residual`
 void jacobi_sweep(const RowMatrix& matrix, const MultigridLevel& level, const Eigen::VectorXd& b,
                   Eigen::VectorXd& x, Eigen::VectorXd& residual) {
-  residual.noalias() = b - matrix * x;
+  block_residual(matrix, b, x, residual);
   const int nodes = static_cast<int>(x.size() / 3);
 #pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
   for (int i = 0; i < nodes; ++i) {
@@ -147,11 +155,82 @@ void jacobi_sweep(const RowMatrix& matrix, const MultigridLevel& level, const Ei
 
 }  // namespace
 
+bool has_3x3_block_rows(const RowMatrix& matrix) {
+  if (matrix.rows() % 3 != 0 || matrix.rows() != matrix.cols() || !matrix.isCompressed()) {
+    return false;
+  }
+  const int* outer = matrix.outerIndexPtr();
+  const int* inner = matrix.innerIndexPtr();
+  for (Eigen::Index i = 0; i < matrix.rows() / 3; ++i) {
+    const int first = outer[3 * i];
+    const int length = outer[3 * i + 1] - first;
+    if (length % 3 != 0) return false;
+    for (int row = 1; row < 3; ++row) {
+      const int start = outer[3 * i + row];
+      if (outer[3 * i + row + 1] - start != length ||
+          !std::equal(inner + first, inner + first + length, inner + start)) {
+        return false;
+      }
+    }
+    for (int k = 0; k < length; k += 3) {
+      const int column = inner[first + k];
+      if (column % 3 != 0 || inner[first + k + 1] != column + 1 ||
+          inner[first + k + 2] != column + 2) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+namespace {
+
+// (A x)_i, the block row of node i of a matrix of full 3x3 blocks
+inline Eigen::Vector3d block_row_product(const RowMatrix& matrix, int i, const Eigen::VectorXd& x) {
+  const int* outer = matrix.outerIndexPtr();
+  const int first = outer[3 * i];
+  const int length = outer[3 * i + 1] - first;
+  const int* columns = matrix.innerIndexPtr() + first;
+  const double* row0 = matrix.valuePtr() + first;
+  const double* row1 = row0 + length;
+  const double* row2 = row1 + length;
+  double y0 = 0.0, y1 = 0.0, y2 = 0.0;
+  for (int k = 0; k < length; k += 3) {
+    const double* xj = x.data() + columns[k];
+    y0 += row0[k] * xj[0] + row0[k + 1] * xj[1] + row0[k + 2] * xj[2];
+    y1 += row1[k] * xj[0] + row1[k + 1] * xj[1] + row1[k + 2] * xj[2];
+    y2 += row2[k] * xj[0] + row2[k + 1] * xj[1] + row2[k + 2] * xj[2];
+  }
+  return {y0, y1, y2};
+}
+
+}  // namespace
+
+void block_residual(const RowMatrix& matrix, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+                    Eigen::VectorXd& r) {
+  const int nodes = static_cast<int>(matrix.rows() / 3);
+  r.resize(matrix.rows());
+#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
+  for (int i = 0; i < nodes; ++i) {
+    r.segment<3>(3 * i) = b.segment<3>(3 * i) - block_row_product(matrix, i, x);
+  }
+}
+
+void block_product(const RowMatrix& matrix, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+  const int nodes = static_cast<int>(matrix.rows() / 3);
+  y.resize(matrix.rows());
+#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
+  for (int i = 0; i < nodes; ++i) y.segment<3>(3 * i) = block_row_product(matrix, i, x);
+}
+
 void AggregationMultigrid::set_operator(const RowMatrix& finest, std::uint64_t pattern_key) {
   m_finest = &finest;
   const bool new_pattern = m_levels.empty() || pattern_key != m_pattern_key;
   m_pattern_key = pattern_key;
   if (new_pattern) {
+    if (!has_3x3_block_rows(finest)) {
+      throw std::invalid_argument("AggregationMultigrid: expected a matrix of full 3x3 blocks");
+    }
     m_levels.resize(1);
     for (int index = 0;; ++index) {
       const int nodes = static_cast<int>(matrix(index).rows() / 3);
@@ -202,7 +281,7 @@ void AggregationMultigrid::cycle(int index) {
   for (int sweep = 1; sweep < smoothing_sweeps; ++sweep) {
     jacobi_sweep(matrix(index), level, level.right_side, level.solution, level.residual);
   }
-  level.residual.noalias() = level.right_side - matrix(index) * level.solution;
+  block_residual(matrix(index), level.right_side, level.solution, level.residual);
   MultigridLevel& coarse = m_levels[index + 1];
   coarse.right_side.setZero();
   for (int i = 0; i < nodes; ++i) {

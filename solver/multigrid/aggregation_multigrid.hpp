@@ -15,6 +15,21 @@
 
 namespace tissu {
 
+/// True when `matrix` (row-major, 3n x 3n) is made of full 3x3 blocks: rows 3i, 3i+1 and 3i+2
+/// hold the same columns, in triples 3j, 3j+1, 3j+2 (spring_block_matrix.hpp's matrices, and the
+/// coarse levels built from them).
+bool has_3x3_block_rows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& matrix);
+
+/// r = b - A x for a matrix of full 3x3 blocks (has_3x3_block_rows()): each block's column index
+/// read once for its three rows, the rows in parallel (the same bits on any thread count).
+/// Allocates nothing once r is sized.
+void block_residual(const Eigen::SparseMatrix<double, Eigen::RowMajor>& matrix,
+                    const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd& r);
+
+/// y = A x for a matrix of full 3x3 blocks, as block_residual().
+void block_product(const Eigen::SparseMatrix<double, Eigen::RowMajor>& matrix,
+                   const Eigen::VectorXd& x, Eigen::VectorXd& y);
+
 /// One level of the hierarchy: its operator (3n x 3n, row-major), the map of its nodes to the
 /// next level's and the inverses of its 3x3 diagonal blocks.
 struct MultigridLevel {
