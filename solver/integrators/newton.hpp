@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Backward Euler by Newton's method on its incremental potential, each linear solve by a
-/// conjugate gradient preconditioned with the prefactorised Projective Dynamics matrix.
+/// conjugate gradient preconditioned with aggregation multigrid on the Hessian (or with the
+/// prefactorised Projective Dynamics matrix).
 
 #include "solver/solver_params.hpp"
 #include "solver/spring_model.hpp"
@@ -17,8 +18,10 @@ namespace tissu {
 /// - the Hessian with every spring's block made positive semidefinite: the clamped elastic block
 ///   (spring_force_jacobian_clamped: compressed springs lose their negative transverse term) plus
 ///   nu/h u_n u_n^T, and the couplings' terms;
-/// - H dx = -grad E solved inexactly by a conjugate gradient preconditioned with (M/h^2 + L)^-1,
-///   the PD matrix (constant per model and h, prefactorised once), to the relative residual
+/// - H dx = -grad E solved inexactly by a conjugate gradient preconditioned with one V-cycle of
+///   AggregationMultigrid on H (params.newton.preconditioner = multigrid: aggregates kept per
+///   model, coarse operators rebuilt at every Newton iteration), or with (M/h^2 + L)^-1, the PD
+///   matrix (pd_matrix: constant per model and h, prefactorised once), to the relative residual
 ///   min(0.25, sqrt(|grad E| / F)) (Eisenstat & Walker 1996's forcing term; F the step's force
 ///   scale) or params.newton.cg_max_iterations; a direction of negative curvature ends it early;
 /// - a backtracking line search on E (Armijo, c = 1e-4);

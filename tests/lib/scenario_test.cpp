@@ -140,13 +140,19 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   const Scenario s = parse_scenario(
       test::minimal_scenario, "dir/s.json",
       {"simulation.integrator=newton",
-       R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50})",
+       R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
+           "preconditioner": "pd_matrix"})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3})",
        "simulation.pd.max_estimated_error=0"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.newton.tolerance, 0.01);
   EXPECT_EQ(s.solver.newton.max_iterations, 7);
   EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);
+  EXPECT_EQ(s.solver.newton.preconditioner, NewtonPreconditioner::pd_matrix);
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.preconditioner,
+            NewtonPreconditioner::multigrid);
+  EXPECT_THAT(with("simulation.newton.preconditioner", R"("jacobi")"),
+              HasSubstr("simulation.newton.preconditioner: expected one of"));
   EXPECT_DOUBLE_EQ(s.solver.quasi_newton.tolerance, 0.02);
   EXPECT_EQ(s.solver.quasi_newton.max_iterations, 9);
   EXPECT_EQ(s.solver.quasi_newton.history, 3);
