@@ -128,8 +128,9 @@ struct NewtonOptions {
   double tolerance = 1e-2;
   int max_iterations = 20;      ///< a step that has not met the tolerance by then is not_converged
   int cg_max_iterations = 200;  ///< conjugate gradient iterations per Newton iteration, at most
-  /// multigrid: 1.5 to 2.6 times faster on the stiff hanging sheet from 81 x 81 to 256 x 256
-  /// particles (docs/benchmarks.md, "Newton preconditioned by multigrid")
+  /// multigrid: 1.8 to 2.9 times faster than pd_matrix on the stiff hanging sheet from 41 x 41 to
+  /// 256 x 256 particles, as close to the converged motion (docs/benchmarks.md, "Newton
+  /// preconditioned by multigrid")
   NewtonPreconditioner preconditioner = NewtonPreconditioner::multigrid;
 };
 
