@@ -73,10 +73,6 @@ TEST(SelfCollision, TwoStackedSheetsDroppedOnTheFloorDoNotPassThroughEachOther) 
   StepWorkspace workspace;
   for (int n = 0; n < 450; ++n) {  // 1.5 s: they land at about 2 m/s, 7 mm per step
     ASSERT_EQ(step(scene.model, scene.params, scene.state, workspace), StepStatus::ok) << n;
-    const SelfCollisionReport& r = workspace.self_collision;
-    if (getenv("TISSU_DEBUG"))
-      printf("%d cand %d prox %d imp %d zone %d res %d\n", n, r.candidates, r.proximities,
-             r.impacts, r.zone_particles, r.resolved);
     ASSERT_TRUE(workspace.self_collision.resolved) << "step " << n;
   }
   EXPECT_GT(smallest_gap_above_lower_sheet(scene.model, scene.state), 0.5 * thickness_m);
