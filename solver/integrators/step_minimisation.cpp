@@ -9,8 +9,7 @@ namespace tissu {
 
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
-                             StepPotential& potential, double& energy_j,
-                             bool factorize_pd_matrix) {
+                             StepPotential& potential, double& energy_j, bool use_pd_matrix) {
   const double h = params.time_step;
   Environment explicit_forces = params.environment;
   explicit_forces.air_damping = 0.0;  // air damping is in the potential, implicit
@@ -18,8 +17,10 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
                              workspace.triangle_forces, workspace.external_force);
   predict_step(model, h, state, workspace.external_force, workspace.x, workspace.inertial);
   if (!workspace.inertial.allFinite()) return false;
-  update_pd_system(model, h, workspace.system);
-  if (factorize_pd_matrix && !workspace.pd_matrix.factorize(workspace.system)) return false;
+  if (use_pd_matrix) {
+    update_pd_system(model, h, workspace.system);
+    if (!workspace.pd_matrix.factorize(workspace.system)) return false;
+  }
   workspace.preconditioned.setZero(3 * model.particle_count());  // pinned entries stay 0
 
   potential = StepPotential{};
