@@ -133,4 +133,42 @@ template void assemble_spring_block_matrix<Eigen::RowMajor>(
     const SpringModel&, const SpringBlockPattern&, const std::vector<Eigen::Matrix3d>&,
     const Eigen::VectorXd&, bool, Eigen::SparseMatrix<double, Eigen::RowMajor>&);
 
+void assemble_symmetric_spring_block_matrix(const SpringModel& model,
+                                            const SpringBlockPattern& pattern,
+                                            const std::vector<Eigen::Matrix3d>& spring_blocks,
+                                            const Eigen::VectorXd& diagonal, bool filter_pinned,
+                                            SymmetricBlockMatrix& matrix) {
+  const int particles = pattern.particle_count;
+  assert(particles == model.particle_count());
+  if (matrix.pattern_key == 0 || matrix.pattern_key != pattern.built_for_model) {
+    matrix.pattern_key = pattern.built_for_model;
+    matrix.offsets = pattern.block_offsets;
+    matrix.columns = pattern.block_columns;
+    matrix.diagonal = pattern.diagonal_block;
+    matrix.values.resize(6 * pattern.block_columns.size());
+  }
+  const ParticleSpringIncidence& incidence = model.incidence;
+  const SymmetricBlock identity = upper_triangle(Eigen::Matrix3d::Identity());
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+  for (int i = 0; i < particles; ++i) {
+    const int first = matrix.offsets[i];
+    std::fill(&matrix.values[6 * first], &matrix.values[6 * matrix.offsets[i + 1]], 0.0);
+    if (filter_pinned && model.inverse_mass[i] == 0.0) {
+      matrix.block(matrix.diagonal[i]) = identity;
+      continue;
+    }
+    SymmetricBlock diagonal_block = diagonal[i] * identity;
+    for (int e = incidence.offsets[i]; e < incidence.offsets[i + 1]; ++e) {
+      const SymmetricBlock w = upper_triangle(spring_blocks[incidence.springs[e]]);
+      diagonal_block += w;
+      matrix.block(pattern.incidence_block[e]) -= w;
+    }
+    matrix.block(matrix.diagonal[i]) = diagonal_block;
+    if (!filter_pinned) continue;
+    for (int k = first; k < matrix.offsets[i + 1]; ++k) {
+      if (model.inverse_mass[matrix.columns[k]] == 0.0) matrix.block(k).setZero();
+    }
+  }
+}
+
 }  // namespace tissu

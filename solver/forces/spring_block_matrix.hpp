@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "solver/forces/symmetric_block_matrix.hpp"
 #include "solver/spring_model.hpp"
 
 namespace tissu {
@@ -44,5 +45,14 @@ void assemble_spring_block_matrix(const SpringModel& model, const SpringBlockPat
                                   const std::vector<Eigen::Matrix3d>& spring_blocks,
                                   const Eigen::VectorXd& diagonal, bool filter_pinned,
                                   Eigen::SparseMatrix<double, StorageOrder>& matrix);
+
+/// The same matrix as assemble_spring_block_matrix(), in symmetric block storage (every
+/// spring_blocks[s] symmetric): half the memory traffic of its products. Copies the pattern's
+/// indices only when `matrix` was built on another pattern.
+void assemble_symmetric_spring_block_matrix(const SpringModel& model,
+                                            const SpringBlockPattern& pattern,
+                                            const std::vector<Eigen::Matrix3d>& spring_blocks,
+                                            const Eigen::VectorXd& diagonal, bool filter_pinned,
+                                            SymmetricBlockMatrix& matrix);
 
 }  // namespace tissu

@@ -46,9 +46,13 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
   }
   newton.diagonal = (1.0 / (h * h) + potential.air_damping / h) * model.mass;
   update_spring_block_pattern(model, newton.pattern);
-  assemble_spring_block_matrix(model, newton.pattern, newton.spring_blocks, newton.diagonal, true,
-                               newton.hessian);
-  if (coupled) add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.hessian);
+  assemble_symmetric_spring_block_matrix(model, newton.pattern, newton.spring_blocks,
+                                         newton.diagonal, true, newton.hessian);
+  if (coupled) {
+    assemble_spring_block_matrix(model, newton.pattern, newton.spring_blocks, newton.diagonal, true,
+                                 newton.coupled_hessian);
+    add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.coupled_hessian);
+  }
 }
 
 // preconditioned = an approximation of H^-1 residual (zero on pinned particles)
@@ -65,7 +69,7 @@ void precondition(NewtonPreconditioner preconditioner, NewtonWorkspace& newton) 
 // forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
 // curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
 // the preconditioned gradient if that is nothing yet.
-int solve_newton_system(NewtonPreconditioner preconditioner, NewtonWorkspace& newton,
+int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled, NewtonWorkspace& newton,
                         double forcing_term, int max_iterations) {
   const Eigen::Index dofs = newton.common.gradient.size();
   newton.correction.setZero(dofs);
@@ -76,7 +80,11 @@ int solve_newton_system(NewtonPreconditioner preconditioner, NewtonWorkspace& ne
   const double target_n = forcing_term * newton.common.gradient.norm();
   int iteration = 0;
   while (iteration < max_iterations && newton.residual.norm() > target_n) {
-    block_product(newton.hessian, newton.search, newton.hessian_search);
+    if (coupled) {
+      newton.hessian_search.noalias() = newton.coupled_hessian * newton.search;
+    } else {
+      symmetric_block_product(newton.hessian, newton.search, newton.hessian_search);
+    }
     const double curvature = newton.search.dot(newton.hessian_search);
     if (!(curvature > 0.0)) {
       if (iteration == 0) newton.correction = newton.search;
@@ -122,8 +130,8 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
     const double forcing_term =
         std::min(max_forcing_term, std::sqrt(relative_residual(newton.common.gradient.norm(),
                                                                force_scale_n, first_gradient_n)));
-    newton.cg_iterations += solve_newton_system(options.preconditioner, newton, forcing_term,
-                                                options.cg_max_iterations);
+    newton.cg_iterations += solve_newton_system(options.preconditioner, model.couplings.rows() > 0,
+                                                newton, forcing_term, options.cg_max_iterations);
     double trial_energy_j = energy_j;
     if (!backtracking_line_search(model, potential, newton.common.x, newton.common.gradient,
                                   energy_j, newton.correction, newton.common.potential,

@@ -57,9 +57,53 @@ TEST(SpringBlockMatrix, MatchesADenseAssemblyInBothStorageOrders) {
   Eigen::SparseMatrix<double, Eigen::RowMajor> row_major;
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, false, column_major);
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, false, row_major);
+  SymmetricBlockMatrix symmetric;
+  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, false, symmetric);
   const Eigen::MatrixXd expected = dense_reference(model, blocks, diagonal);
   EXPECT_LT((Eigen::MatrixXd(column_major) - expected).cwiseAbs().maxCoeff(), 1e-14);
   EXPECT_LT((Eigen::MatrixXd(row_major) - expected).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((Eigen::MatrixXd(to_sparse(symmetric)) - expected).cwiseAbs().maxCoeff(), 1e-14);
+}
+
+TEST(SpringBlockMatrix, SymmetricBlockProductsMatchTheDenseMatrix) {
+  State state;
+  SpringModel model = test::random_model(30, 120, 0, 23, state);
+  model.pinned[4] = 1;
+  finalize_model(model);
+  std::vector<Eigen::Matrix3d> blocks;
+  Eigen::VectorXd diagonal;
+  random_blocks(model, blocks, diagonal);
+  SpringBlockPattern pattern;
+  update_spring_block_pattern(model, pattern);
+  SymmetricBlockMatrix symmetric;
+  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, true, symmetric);
+  const Eigen::MatrixXd dense(to_sparse(symmetric));
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(dense.rows(), -1.0, 2.0);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(dense.rows(), 3.0, -0.5);
+  Eigen::VectorXd product, residual;
+  symmetric_block_product(symmetric, x, product);
+  symmetric_block_residual(symmetric, b, x, residual);
+  EXPECT_LT((product - dense * x).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_LT((residual - (b - dense * x)).cwiseAbs().maxCoeff(), 1e-13);
+}
+
+TEST(SpringBlockMatrix, SymmetricStorageFollowsANewPattern) {
+  State state;
+  const SpringModel first = test::random_model(8, 20, 0, 24, state);
+  const SpringModel second = test::random_model(12, 30, 0, 25, state);
+  SymmetricBlockMatrix reused;
+  for (const SpringModel* model : {&first, &second}) {
+    std::vector<Eigen::Matrix3d> blocks;
+    Eigen::VectorXd diagonal;
+    random_blocks(*model, blocks, diagonal);
+    SpringBlockPattern pattern;
+    update_spring_block_pattern(*model, pattern);
+    SymmetricBlockMatrix fresh;
+    assemble_symmetric_spring_block_matrix(*model, pattern, blocks, diagonal, true, reused);
+    assemble_symmetric_spring_block_matrix(*model, pattern, blocks, diagonal, true, fresh);
+    EXPECT_EQ(reused.columns, fresh.columns);
+    EXPECT_EQ(reused.values, fresh.values);
+  }
 }
 
 TEST(SpringBlockMatrix, FilterGivesSASPlusIMinusS) {
@@ -75,6 +119,8 @@ TEST(SpringBlockMatrix, FilterGivesSASPlusIMinusS) {
   update_spring_block_pattern(model, pattern);
   Eigen::SparseMatrix<double> filtered;
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, true, filtered);
+  SymmetricBlockMatrix symmetric;
+  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, true, symmetric);
   const int dofs = 3 * model.particle_count();
   Eigen::VectorXd s = Eigen::VectorXd::Ones(dofs);
   s.segment<3>(6).setZero();
@@ -83,6 +129,7 @@ TEST(SpringBlockMatrix, FilterGivesSASPlusIMinusS) {
       s.asDiagonal() * dense_reference(model, blocks, diagonal) * s.asDiagonal() +
       Eigen::MatrixXd((Eigen::VectorXd::Ones(dofs) - s).asDiagonal());
   EXPECT_LT((Eigen::MatrixXd(filtered) - expected).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((Eigen::MatrixXd(to_sparse(symmetric)) - expected).cwiseAbs().maxCoeff(), 1e-14);
 }
 
 }  // namespace

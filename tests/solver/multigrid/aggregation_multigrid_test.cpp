@@ -19,13 +19,11 @@
 namespace tissu {
 namespace {
 
-using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-
 // The Newton Hessian M/h^2 + sum of clamped spring blocks (N/m) of an n x n sheet of 1 m, 1 kg,
 // 3000 N/m springs, two corners pinned (identity rows), stretched by 1 % and crumpled by up to
 // 1 cm out of plane, at h = 1/30 s: the system the Newton integrator solves on docs/benchmarks.md's
 // stiff sheet.
-RowMatrix sheet_hessian(int n, unsigned seed, SpringModel& model) {
+SymmetricBlockMatrix sheet_hessian(int n, unsigned seed, SpringModel& model) {
   State state;
   model = test::grid_model(n, n, 1.0 / (n - 1), 1.0 / (n * n), 3000.0, 0.0, state);
   model.pinned[n * (n - 1)] = 1;
@@ -46,9 +44,9 @@ RowMatrix sheet_hessian(int n, unsigned seed, SpringModel& model) {
   const double h = 1.0 / 30.0;
   SpringBlockPattern pattern;
   update_spring_block_pattern(model, pattern);
-  RowMatrix hessian;
-  assemble_spring_block_matrix(model, pattern, blocks, Eigen::VectorXd(model.mass / (h * h)), true,
-                               hessian);
+  SymmetricBlockMatrix hessian;
+  assemble_symmetric_spring_block_matrix(model, pattern, blocks,
+                                         Eigen::VectorXd(model.mass / (h * h)), true, hessian);
   return hessian;
 }
 
@@ -64,8 +62,8 @@ Eigen::VectorXd random_free_vector(const SpringModel& model, unsigned seed) {
 
 // Conjugate gradient on A x = b from 0, preconditioned by one V-cycle, to |r| <= tolerance |b|;
 // returns the iterations.
-int preconditioned_cg(const RowMatrix& a, AggregationMultigrid& multigrid, const Eigen::VectorXd& b,
-                      double tolerance, Eigen::VectorXd& x) {
+int preconditioned_cg(const SymmetricBlockMatrix& a, AggregationMultigrid& multigrid,
+                      const Eigen::VectorXd& b, double tolerance, Eigen::VectorXd& x) {
   x.setZero(b.size());
   Eigen::VectorXd r = b, z, p, ap;
   multigrid.apply(r, z);
@@ -73,7 +71,7 @@ int preconditioned_cg(const RowMatrix& a, AggregationMultigrid& multigrid, const
   double rz = r.dot(z);
   int iteration = 0;
   while (r.norm() > tolerance * b.norm() && iteration < 1000) {
-    ap = a * p;
+    symmetric_block_product(a, p, ap);
     const double alpha = rz / p.dot(ap);
     x += alpha * p;
     r -= alpha * ap;
@@ -88,7 +86,7 @@ int preconditioned_cg(const RowMatrix& a, AggregationMultigrid& multigrid, const
 
 TEST(AggregationMultigrid, TheVCycleIsSymmetricAndPositiveDefinite) {
   SpringModel model;
-  const RowMatrix hessian = sheet_hessian(31, 1, model);
+  const SymmetricBlockMatrix hessian = sheet_hessian(31, 1, model);
   AggregationMultigrid multigrid;
   multigrid.set_operator(hessian, model.identity);
   EXPECT_GE(multigrid.level_count(), 3);
@@ -103,8 +101,9 @@ TEST(AggregationMultigrid, TheVCycleIsSymmetricAndPositiveDefinite) {
     EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-12 * scale) << "seed " << seed;
     EXPECT_GT(r1.dot(z1), 0.0) << "seed " << seed;
     for (int p = 0; p < model.particle_count(); ++p) {  // pinned particles do not move
-      if (model.pinned[p])
+      if (model.pinned[p]) {
         EXPECT_EQ(Eigen::Vector3d(z1.segment<3>(3 * p)), Eigen::Vector3d::Zero());
+      }
     }
   }
 }
@@ -112,19 +111,17 @@ TEST(AggregationMultigrid, TheVCycleIsSymmetricAndPositiveDefinite) {
 TEST(AggregationMultigrid, ConjugateGradientIterationsDoNotGrowWithTheSheet) {
   // the PD matrix, blind to the taut sheet's softness across its springs, needs 15.7 iterations
   // per Newton iteration at only 1/4 of the residual (docs/benchmarks.md); the V-cycle on the
-  // Hessian itself solves to 1e-8 in a count that stays put from 41 x 41 to 81 x 81 (62 and 59;
-  // 35 at 21 x 21, where the hierarchy has a level less)
+  // Hessian itself solves to 1e-8 in a count that stays put from 41 x 41 to 81 x 81 (57 and 55)
   std::vector<int> iterations;
   for (const int n : {41, 81}) {
     SpringModel model;
-    const RowMatrix hessian = sheet_hessian(n, 3, model);
+    const SymmetricBlockMatrix hessian = sheet_hessian(n, 3, model);
     AggregationMultigrid multigrid;
     multigrid.set_operator(hessian, model.identity);
     const Eigen::VectorXd b = random_free_vector(model, 4);
     Eigen::VectorXd x;
     iterations.push_back(preconditioned_cg(hessian, multigrid, b, 1e-8, x));
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct{
-        Eigen::SparseMatrix<double>(hessian)};
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct{to_sparse(hessian)};
     const Eigen::VectorXd exact = direct.solve(b);
     EXPECT_LT((x - exact).norm(), 1e-6 * exact.norm()) << n << " x " << n;
   }
@@ -134,8 +131,8 @@ TEST(AggregationMultigrid, ConjugateGradientIterationsDoNotGrowWithTheSheet) {
 
 TEST(AggregationMultigrid, ANewPatternKeyRebuildsTheHierarchy) {
   SpringModel small, large;
-  const RowMatrix first = sheet_hessian(21, 5, small);
-  const RowMatrix second = sheet_hessian(33, 6, large);
+  const SymmetricBlockMatrix first = sheet_hessian(21, 5, small);
+  const SymmetricBlockMatrix second = sheet_hessian(33, 6, large);
   AggregationMultigrid reused, fresh;
   reused.set_operator(first, small.identity);
   reused.set_operator(second, large.identity);
