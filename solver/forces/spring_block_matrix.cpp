@@ -135,7 +135,7 @@ template void assemble_spring_block_matrix<Eigen::RowMajor>(
 
 void assemble_symmetric_spring_block_matrix(const SpringModel& model,
                                             const SpringBlockPattern& pattern,
-                                            const std::vector<Eigen::Matrix3d>& spring_blocks,
+                                            const std::vector<SymmetricBlock>& spring_blocks,
                                             const Eigen::VectorXd& diagonal, bool filter_pinned,
                                             SymmetricBlockMatrix& matrix) {
   const int particles = pattern.particle_count;
@@ -159,7 +159,7 @@ void assemble_symmetric_spring_block_matrix(const SpringModel& model,
     }
     SymmetricBlock diagonal_block = diagonal[i] * identity;
     for (int e = incidence.offsets[i]; e < incidence.offsets[i + 1]; ++e) {
-      const SymmetricBlock w = upper_triangle(spring_blocks[incidence.springs[e]]);
+      const SymmetricBlock& w = spring_blocks[incidence.springs[e]];
       diagonal_block += w;
       matrix.block(pattern.incidence_block[e]) -= w;
     }

@@ -46,12 +46,12 @@ void assemble_spring_block_matrix(const SpringModel& model, const SpringBlockPat
                                   const Eigen::VectorXd& diagonal, bool filter_pinned,
                                   Eigen::SparseMatrix<double, StorageOrder>& matrix);
 
-/// The same matrix as assemble_spring_block_matrix(), in symmetric block storage (every
-/// spring_blocks[s] symmetric): half the memory traffic of its products. Copies the pattern's
-/// indices only when `matrix` was built on another pattern.
+/// The same matrix as assemble_spring_block_matrix(), in symmetric block storage, from the upper
+/// triangles of the springs' blocks: half the memory traffic of its products. Copies the
+/// pattern's indices only when `matrix` was built on another pattern.
 void assemble_symmetric_spring_block_matrix(const SpringModel& model,
                                             const SpringBlockPattern& pattern,
-                                            const std::vector<Eigen::Matrix3d>& spring_blocks,
+                                            const std::vector<SymmetricBlock>& spring_blocks,
                                             const Eigen::VectorXd& diagonal, bool filter_pinned,
                                             SymmetricBlockMatrix& matrix);
 

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "solver/forces/symmetric_block_matrix.hpp"
+
 namespace tissu {
 
 /// Below this length (m) a spring has no direction: its force and Jacobians are returned as zero
@@ -69,6 +71,29 @@ inline Eigen::Matrix3d spring_force_jacobian_clamped(const Eigen::Vector3d& xi,
   const Eigen::Matrix3d uut = u * u.transpose();
   const double transverse = l0 < length ? 1.0 - l0 / length : 0.0;
   return -k * (transverse * (Eigen::Matrix3d::Identity() - uut) + uut);
+}
+
+/// Upper triangle of a spring's block of backward Euler's Hessian, k [t I + (1 - t) u u^T] +
+/// c n n^T (N/m), for d = xi - xj: the clamped stiffness -spring_force_jacobian_clamped(), t =
+/// max(0, 1 - l0/|d|), u = d/|d| (none when |d| < spring_length_epsilon), plus a viscous term c
+/// (N/m) along the unit direction n. Six values computed directly, for Newton's Hessian.
+inline SymmetricBlock spring_hessian_block(const Eigen::Vector3d& d, double k, double l0,
+                                           const Eigen::Vector3d& n, double c) {
+  const double length = d.norm();
+  double along = 0.0, transverse = 0.0;  // k (1 - t) / |d|^2 and k t (N/m per m^2, N/m)
+  if (length >= spring_length_epsilon) {
+    const double t = l0 < length ? 1.0 - l0 / length : 0.0;
+    along = k * (1.0 - t) / (length * length);
+    transverse = k * t;
+  }
+  SymmetricBlock block;
+  block[0] = along * d[0] * d[0] + c * n[0] * n[0] + transverse;
+  block[1] = along * d[0] * d[1] + c * n[0] * n[1];
+  block[2] = along * d[0] * d[2] + c * n[0] * n[2];
+  block[3] = along * d[1] * d[1] + c * n[1] * n[1] + transverse;
+  block[4] = along * d[1] * d[2] + c * n[1] * n[2];
+  block[5] = along * d[2] * d[2] + c * n[2] * n[2] + transverse;
+  return block;
 }
 
 /// Viscous force on i (N): f_i = -nu ((vi - vj) . u) u, u = (xi - xj) / |xi - xj|.

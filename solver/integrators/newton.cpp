@@ -31,16 +31,18 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
   const bool coupled = model.couplings.rows() > 0;
   const double viscous_scale = 1.0 / h;  // nu/h (N/m per N s/m)
   newton.spring_blocks.resize(springs);
+  if (coupled) newton.coupled_spring_blocks.resize(springs);
 #pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
   for (int s = 0; s < springs; ++s) {
     const auto xi = x.segment<3>(3 * model.springs(s, 0));
     const auto xj = x.segment<3>(3 * model.springs(s, 1));
-    const auto u_n = start_directions.col(s);
-    Eigen::Matrix3d block =
-        -spring_force_jacobian_clamped(xi, xj, model.stiffness[s], model.rest_length[s]) +
-        (viscous_scale * model.damping[s]) * (u_n * u_n.transpose());
+    SymmetricBlock block =
+        spring_hessian_block(xi - xj, model.stiffness[s], model.rest_length[s],
+                             start_directions.col(s), viscous_scale * model.damping[s]);
     if (coupled) {  // evaluate_step_potential() left the couplings' tensions at x
-      block -= coupling_tension_jacobian(xi, xj, newton.common.potential.coupling_tension[s], true);
+      block -= upper_triangle(
+          coupling_tension_jacobian(xi, xj, newton.common.potential.coupling_tension[s], true));
+      newton.coupled_spring_blocks[s] = full_block(block);
     }
     newton.spring_blocks[s] = block;
   }
@@ -49,8 +51,8 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
   assemble_symmetric_spring_block_matrix(model, newton.pattern, newton.spring_blocks,
                                          newton.diagonal, true, newton.hessian);
   if (coupled) {
-    assemble_spring_block_matrix(model, newton.pattern, newton.spring_blocks, newton.diagonal, true,
-                                 newton.coupled_hessian);
+    assemble_spring_block_matrix(model, newton.pattern, newton.coupled_spring_blocks,
+                                 newton.diagonal, true, newton.coupled_hessian);
     add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.coupled_hessian);
   }
 }

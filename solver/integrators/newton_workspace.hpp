@@ -19,10 +19,11 @@ namespace tissu {
 /// terms are not symmetric blocks) also keeps all of H in Eigen's row-major storage for the
 /// conjugate gradient's products, the multigrid preconditioning it from the springs' part.
 struct NewtonWorkspace {
-  MinimisationWorkspace common;                ///< potential, iterate, PD matrix (preconditioner)
-  SpringBlockPattern pattern;                  ///< sparsity of the Hessian
-  std::vector<Eigen::Matrix3d> spring_blocks;  ///< #S Hessian block of each spring (N/m)
-  Eigen::VectorXd diagonal;                    ///< #P m_i (1/h^2 + c/h) (kg/s^2)
+  MinimisationWorkspace common;               ///< potential, iterate, PD matrix (preconditioner)
+  SpringBlockPattern pattern;                 ///< sparsity of the Hessian
+  std::vector<SymmetricBlock> spring_blocks;  ///< #S Hessian block of each spring (N/m)
+  std::vector<Eigen::Matrix3d> coupled_spring_blocks;  ///< the same, full, with couplings only
+  Eigen::VectorXd diagonal;                            ///< #P m_i (1/h^2 + c/h) (kg/s^2)
   SymmetricBlockMatrix hessian;  ///< 3#P x 3#P H without the couplings' cross terms (N/m)
   Eigen::SparseMatrix<double, Eigen::RowMajor> coupled_hessian;  ///< all of H, with couplings only
   AggregationMultigrid multigrid;

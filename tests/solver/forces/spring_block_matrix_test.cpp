@@ -24,6 +24,12 @@ void random_blocks(const SpringModel& model, std::vector<Eigen::Matrix3d>& block
   for (Eigen::Index p = 0; p < diagonal.size(); ++p) diagonal[p] = 2.0 + unit(rng);
 }
 
+std::vector<SymmetricBlock> upper_triangles(const std::vector<Eigen::Matrix3d>& blocks) {
+  std::vector<SymmetricBlock> upper;
+  for (const Eigen::Matrix3d& block : blocks) upper.push_back(upper_triangle(block));
+  return upper;
+}
+
 // the same matrix assembled densely, spring by spring
 Eigen::MatrixXd dense_reference(const SpringModel& model,
                                 const std::vector<Eigen::Matrix3d>& blocks,
@@ -58,7 +64,8 @@ TEST(SpringBlockMatrix, MatchesADenseAssemblyInBothStorageOrders) {
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, false, column_major);
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, false, row_major);
   SymmetricBlockMatrix symmetric;
-  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, false, symmetric);
+  assemble_symmetric_spring_block_matrix(model, pattern, upper_triangles(blocks), diagonal, false,
+                                         symmetric);
   const Eigen::MatrixXd expected = dense_reference(model, blocks, diagonal);
   EXPECT_LT((Eigen::MatrixXd(column_major) - expected).cwiseAbs().maxCoeff(), 1e-14);
   EXPECT_LT((Eigen::MatrixXd(row_major) - expected).cwiseAbs().maxCoeff(), 1e-14);
@@ -76,7 +83,8 @@ TEST(SpringBlockMatrix, SymmetricBlockProductsMatchTheDenseMatrix) {
   SpringBlockPattern pattern;
   update_spring_block_pattern(model, pattern);
   SymmetricBlockMatrix symmetric;
-  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, true, symmetric);
+  assemble_symmetric_spring_block_matrix(model, pattern, upper_triangles(blocks), diagonal, true,
+                                         symmetric);
   const Eigen::MatrixXd dense(to_sparse(symmetric));
   const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(dense.rows(), -1.0, 2.0);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(dense.rows(), 3.0, -0.5);
@@ -99,8 +107,10 @@ TEST(SpringBlockMatrix, SymmetricStorageFollowsANewPattern) {
     SpringBlockPattern pattern;
     update_spring_block_pattern(*model, pattern);
     SymmetricBlockMatrix fresh;
-    assemble_symmetric_spring_block_matrix(*model, pattern, blocks, diagonal, true, reused);
-    assemble_symmetric_spring_block_matrix(*model, pattern, blocks, diagonal, true, fresh);
+    assemble_symmetric_spring_block_matrix(*model, pattern, upper_triangles(blocks), diagonal, true,
+                                           reused);
+    assemble_symmetric_spring_block_matrix(*model, pattern, upper_triangles(blocks), diagonal, true,
+                                           fresh);
     EXPECT_EQ(reused.columns, fresh.columns);
     EXPECT_EQ(reused.values, fresh.values);
   }
@@ -120,7 +130,8 @@ TEST(SpringBlockMatrix, FilterGivesSASPlusIMinusS) {
   Eigen::SparseMatrix<double> filtered;
   assemble_spring_block_matrix(model, pattern, blocks, diagonal, true, filtered);
   SymmetricBlockMatrix symmetric;
-  assemble_symmetric_spring_block_matrix(model, pattern, blocks, diagonal, true, symmetric);
+  assemble_symmetric_spring_block_matrix(model, pattern, upper_triangles(blocks), diagonal, true,
+                                         symmetric);
   const int dofs = 3 * model.particle_count();
   Eigen::VectorXd s = Eigen::VectorXd::Ones(dofs);
   s.segment<3>(6).setZero();

@@ -127,5 +127,20 @@ TEST(SpringForce, ZeroLengthGivesZeroNotNaN) {
   EXPECT_TRUE(std::isfinite(spring_energy(x, x, 100.0, 0.1)));
 }
 
+TEST(SpringForce, HessianBlockIsTheClampedStiffnessPlusTheViscousTerm) {
+  const Eigen::Vector3d xj(0.1, -0.2, 0.3);
+  const Eigen::Vector3d n = Eigen::Vector3d(1.0, 2.0, -2.0) / 3.0;
+  const double k = 3000.0, c = 45.0;
+  // stretched, compressed (no transverse term), and too short to have a direction
+  for (const Eigen::Vector3d& d :
+       {Eigen::Vector3d(0.3, 0.4, -0.1), Eigen::Vector3d(0.01, 0.02, 0.0),
+        Eigen::Vector3d(1e-13, 0.0, 0.0)}) {
+    const Eigen::Matrix3d expected =
+        -spring_force_jacobian_clamped(xj + d, xj, k, 0.1) + c * n * n.transpose();
+    const Eigen::Matrix3d block = full_block(spring_hessian_block(d, k, 0.1, n, c));
+    EXPECT_LT((block - expected).cwiseAbs().maxCoeff(), 1e-12 * k) << d.transpose();
+  }
+}
+
 }  // namespace
 }  // namespace tissu

@@ -35,11 +35,11 @@ SymmetricBlockMatrix sheet_hessian(int n, unsigned seed, SpringModel& model) {
     state.x.segment<3>(3 * p) *= 1.01;
     state.x[3 * p + 2] += crumple(random);
   }
-  std::vector<Eigen::Matrix3d> blocks(model.spring_count());
+  std::vector<SymmetricBlock> blocks(model.spring_count());
   for (int s = 0; s < model.spring_count(); ++s) {
-    blocks[s] = -spring_force_jacobian_clamped(state.x.segment<3>(3 * model.springs(s, 0)),
-                                               state.x.segment<3>(3 * model.springs(s, 1)),
-                                               model.stiffness[s], model.rest_length[s]);
+    blocks[s] = upper_triangle(-spring_force_jacobian_clamped(
+        state.x.segment<3>(3 * model.springs(s, 0)), state.x.segment<3>(3 * model.springs(s, 1)),
+        model.stiffness[s], model.rest_length[s]));
   }
   const double h = 1.0 / 30.0;
   SpringBlockPattern pattern;
