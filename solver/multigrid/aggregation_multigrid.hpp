@@ -7,7 +7,7 @@
 /// cloth far softer across its springs than along them), which the PD matrix cannot (Vanek,
 /// Mandel & Brezina 1996 for the aggregation; Tamstorf, Jones & McCormick 2015 for multigrid on
 /// cloth). Every level is stored in symmetric 3x3 blocks (symmetric_block_matrix.hpp). On the
-/// stiff sheet the V-cycles per step grow from 30.5 to 35.6 from 81 x 81 to 512 x 512 particles
+/// stiff sheet the V-cycles per step grow from 28 to 39 from 81 x 81 to 512 x 512 particles
 /// (docs/benchmarks.md).
 
 #include <Eigen/Core>
