@@ -20,7 +20,8 @@ namespace tissu {
 ///   nu/h u_n u_n^T, and the couplings' terms;
 /// - H dx = -grad E solved inexactly by a conjugate gradient preconditioned with one V-cycle of
 ///   AggregationMultigrid on H (params.newton.preconditioner = multigrid: aggregates kept per
-///   model, coarse operators rebuilt at every Newton iteration), or with (M/h^2 + L)^-1, the PD
+///   model, coarse operators rebuilt at every Newton iteration; on the springs' part of H when
+///   the model has couplings), or with (M/h^2 + L)^-1, the PD
 ///   matrix (pd_matrix: constant per model and h, prefactorised once), to the relative residual
 ///   min(0.25, sqrt(|grad E| / F)) (Eisenstat & Walker 1996's forcing term; F the step's force
 ///   scale) or params.newton.cg_max_iterations; a direction of negative curvature ends it early;
