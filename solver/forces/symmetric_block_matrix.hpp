@@ -4,9 +4,9 @@
 /// network's stiffness (every spring's block k-weighted outer products, symmetric) and the
 /// Galerkin coarse operators built from it. Six values per block instead of Eigen's nine and a
 /// column index per block instead of one per scalar: 52 bytes per block against 108 in Eigen's
-/// scalar CSR. The products stream the whole matrix, so that sets their speed once it no longer fits in
-/// the caches: Newton on the stiff sheet of 128 x 128 particles ran 2.2 times faster when its
-/// Hessian moved to this storage (docs/benchmarks.md).
+/// scalar CSR. The products stream the whole matrix, so that sets their speed once it no longer
+/// fits in the caches: Newton on the stiff sheet of 128 x 128 particles ran 2.2 times faster when
+/// its Hessian moved to this storage (docs/benchmarks.md).
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
