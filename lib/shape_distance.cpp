@@ -10,6 +10,8 @@
 namespace tissu {
 namespace {
 
+constexpr double rest_tie_m = 1e-9;  // rest-space distances this close are the same point's
+
 struct Triangle {
   int a, b, c;
 };
@@ -38,27 +40,32 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
     boxes.push_back(box.extend(other.rest_m[t.b]).extend(other.rest_m[t.c]));
   }
 
+  // the rest-space distance from X to triangle k and the current position of its nearest point
+  const auto locate = [&](std::size_t k, const Eigen::Vector3d& X, Eigen::Vector3d& here_m) {
+    const Triangle& t = triangles[k];
+    const std::vector<Eigen::Vector3d>& X_k = other.rest_m;
+    const Eigen::Vector3d l = nearest_on_triangle(X, X_k[t.a], X_k[t.b], X_k[t.c]);
+    const std::vector<Eigen::Vector3d>& x = other.current.vertices;
+    here_m = l[0] * x[t.a] + l[1] * x[t.b] + l[2] * x[t.c];
+    return (l[0] * X_k[t.a] + l[1] * X_k[t.b] + l[2] * X_k[t.c] - X).norm();
+  };
   ShapeDistance out;
   for (std::size_t i = 0; i < reference.rest_m.size(); ++i) {
     const Eigen::Vector3d& X = reference.rest_m[i];
     // nearest triangle in rest space; a box farther than the best distance cannot hold a nearer one
     double best_m = std::numeric_limits<double>::infinity();
-    Eigen::Vector3d here_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d here_m;
     for (std::size_t k = 0; k < triangles.size(); ++k) {
-      if (boxes[k].exteriorDistance(X) >= best_m) continue;
-      const Triangle& t = triangles[k];
-      const Eigen::Vector3d l =
-          nearest_on_triangle(X, other.rest_m[t.a], other.rest_m[t.b], other.rest_m[t.c]);
-      const double rest_gap_m =
-          (l[0] * other.rest_m[t.a] + l[1] * other.rest_m[t.b] + l[2] * other.rest_m[t.c] - X)
-              .norm();
-      if (rest_gap_m < best_m) {
-        best_m = rest_gap_m;
-        const std::vector<Eigen::Vector3d>& x = other.current.vertices;
-        here_m = l[0] * x[t.a] + l[1] * x[t.b] + l[2] * x[t.c];
-      }
+      if (boxes[k].exteriorDistance(X) < best_m) best_m = std::min(best_m, locate(k, X, here_m));
     }
-    const double gap_m = (here_m - reference.current.vertices[i]).norm();
+    // of the triangles that nearest (both lips of a tear hold the points along it), the one whose
+    // point is nearest now
+    const double tied_m = best_m + rest_tie_m;
+    double gap_m = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      if (boxes[k].exteriorDistance(X) > tied_m || locate(k, X, here_m) > tied_m) continue;
+      gap_m = std::min(gap_m, (here_m - reference.current.vertices[i]).norm());
+    }
     out.mean_m += gap_m;
     out.max_m = std::max(out.max_m, gap_m);
     ++out.points;

@@ -24,8 +24,10 @@ struct ShapeDistance {
 /// For every vertex of `reference`, the distance between its current position and the current
 /// position of the same material point on `other`: the point is located on the nearest of
 /// `other`'s triangles in rest space (quads are split along their first diagonal) and its position
-/// interpolated barycentrically. Both surfaces must share their rest space (the same cloth at two
-/// resolutions). Throws std::invalid_argument when `other` has no face or the sizes disagree.
+/// interpolated barycentrically. A point that several of `other`'s triangles hold as nearly (to
+/// 1 nm) at different places, as both lips of a tear do, is compared with the nearest of them.
+/// Both surfaces must share their rest space (the same cloth at two resolutions, torn or not).
+/// Throws std::invalid_argument when `other` has no face or the sizes disagree.
 ShapeDistance material_point_distance(const MaterialSurface& other,
                                       const MaterialSurface& reference);
 

@@ -68,6 +68,43 @@ TEST(MaterialPointDistance, ACoarseMeshMissesACurvedShapeByItsInterpolationError
   EXPECT_LT(material_point_distance(fine, coarse).max_m, 1e-12);  // coarse samples lie on fine
 }
 
+/// A 1 m x 0.5 m sheet torn in two along x = 0.5 m (each half has its own vertices there), each
+/// half on `cells` x `cells` triangle cells, the left one moved by `left_y_m` across the sheet and
+/// the right one by `right_y_m`.
+MaterialSurface torn_sheet(int cells, double left_y_m, double right_y_m) {
+  MaterialSurface torn;
+  for (const double x0_m : {0.0, 0.5}) {
+    GridOptions o;
+    o.origin = Eigen::Vector3d(x0_m, 0.0, 0.0);
+    o.width = 0.5;
+    o.height = 0.5;
+    o.cells_u = cells;
+    o.cells_v = cells;
+    o.cells = GridCells::triangles;
+    const IndexedMesh half = make_grid_mesh(o);
+    const int first = static_cast<int>(torn.rest_m.size());
+    for (const Eigen::Vector3d& X : half.vertices) {
+      torn.rest_m.push_back(X);
+      torn.current.vertices.push_back(
+          X + Eigen::Vector3d(0.0, x0_m == 0.0 ? left_y_m : right_y_m, 0.0));
+    }
+    for (std::vector<int> face : half.faces) {
+      for (int& v : face) v += first;
+      torn.current.faces.push_back(face);
+    }
+  }
+  return torn;
+}
+
+TEST(MaterialPointDistance, BothLipsOfATearHoldItsPoints) {
+  // a point on the tear lies on both halves in rest space: it is the nearer lip's point now
+  const MaterialSurface apart = torn_sheet(4, 0.0, 0.3);
+  EXPECT_LT(material_point_distance(apart, apart).max_m, 1e-12);
+  const ShapeDistance d = material_point_distance(torn_sheet(3, 0.0, 0.4), apart);
+  EXPECT_NEAR(d.max_m, 0.1, 1e-12);    // the right half's points, those on its lip among them
+  EXPECT_NEAR(d.mean_m, 0.05, 1e-12);  // half of the points are the right half's
+}
+
 TEST(MaterialPointDistance, RefusesSurfacesWithoutFacesOrRestPositions) {
   const MaterialSurface fine = sheet(4, GridCells::triangles, bulged);
   MaterialSurface empty;
