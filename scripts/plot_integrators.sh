@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Runs bench/integrator_bench's hanging sheets (one thread) and plots each method's wall time per
-# frame against the particle count, log-log, into docs/integrators.png; the benchmark's CSV is
-# kept next to it as docs/integrators.csv, and `--plot-only` replots that CSV. Needs a Release
-# build (scripts/build.sh) and gnuplot (scripts/setup.sh installs it). About 30 minutes, much of
-# it the converged reference trajectories (TISSU_SHEET_REFERENCES=0 skips them).
+# frame against the particle count, log-log, into docs/integrators.png, with Bullet's soft body
+# on the same sheet (bench/bullet_sheet_bench) and dotted lines for the methods that missed their
+# tolerance; the benchmarks' CSV is kept next to it as docs/integrators.csv, and `--plot-only`
+# replots that CSV. Needs a Release build (scripts/build.sh) and gnuplot (scripts/setup.sh
+# installs it). About an hour: the converged reference trajectories and the slow methods at 512 x
+# 512 (newton_pd_matrix, the tight tolerances) take most of it; TISSU_SHEET_REFERENCES=0 skips
+# the references.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${TISSU_BUILD_DIR:-build/release}
@@ -17,20 +20,40 @@ fail() { echo "plot_integrators: $*" >&2; exit 1; }
 command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
 if [[ ${1:-} != --plot-only ]]; then
   bench=$build_dir/bench/integrator_bench
-  [[ -x $bench ]] || fail "$bench not found; build it with scripts/build.sh"
+  peer=$build_dir/bench/bullet_sheet_bench
+  [[ -x $bench && -x $peer ]] || fail "$bench or $peer not found; build them with scripts/build.sh"
   OMP_NUM_THREADS=1 "$bench" --benchmark_filter=HangingSheet \
     --benchmark_out="$csv" --benchmark_out_format=csv
+  peer_csv=$(mktemp)
+  "$peer" --benchmark_out="$peer_csv" --benchmark_out_format=csv
+  # with its own header: its counters are not the same columns
+  grep -E '^(name,|"BulletSheet/)' "$peer_csv" >>"$csv" || fail "no Bullet rows in $peer_csv"
+  rm -f "$peer_csv"
 fi
 [[ -f $csv ]] || fail "$csv not found; run without --plot-only first"
 
-# "BM_HangingSheet/<method>/<N>/..." rows -> "<method> <particles> <ms per frame> <unconverged>"
+# "BM_HangingSheet/<method>/<N>/..." rows -> "<method> <particles> <ms per frame> <unconverged>",
+# "BulletSheet/<N>/..." rows -> "bullet <particles> <ms per frame> 0"; each header line names
+# the columns of the rows after it
 awk -F, '
-  /^name,/ { for (c = 1; c <= NF; ++c) column[$c] = c; next }
-  column["name"] && $1 ~ /^"BM_HangingSheet\// {
+  /^name,/ { delete column; for (c = 1; c <= NF; ++c) column[$c] = c; next }
+  column["name"] && $1 ~ /^"(BM_HangingSheet|BulletSheet)\// {
     gsub(/"/, "", $1); split($1, part, "/")
-    print part[2], $column["\"particles\""], $column["\"ms_per_frame\""], $column["\"unconverged\""]
+    method = $1 ~ /^BulletSheet/ ? "bullet" : part[2]
+    unconverged = method == "bullet" ? 0 : $column["\"unconverged\""]
+    print method, $column["\"particles\""], $column["\"ms_per_frame\""], unconverged
   }' "$csv" >"$points"
 
+# one line per method; a method that missed its tolerance on some step is dotted and says so
+plot="plot"
+for method in implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton; do
+  unconverged=$(awk -v m="$method" '$1 == m { u += $4 } END { print u + 0 }' "$points")
+  title=$method
+  dash=1
+  if [[ $unconverged != 0 ]]; then title="$method ($unconverged unconverged steps)"; dash=3; fi
+  plot+=" \"$points\" using (strcol(1) eq \"$method\" ? \$2 : 1/0):3 with linespoints"
+  plot+=" dashtype $dash pointsize 1 title \"$title\","
+done
 gnuplot <<PLOT
 set terminal pngcairo size 1000,750 font ",11"
 set output "$png"
@@ -39,10 +62,10 @@ set logscale xy
 set xlabel "particles"
 set ylabel "ms per frame"
 set grid
-set key top left noenhanced
-methods = "implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton"
-plot for [m in methods] "$points" using (strcol(1) eq m ? \$2 : 1/0):3 with linespoints \
-       pointsize 1 title m, \
-     x * 19.0 / 6561 with lines dashtype 2 linecolor "black" title "linear in the particle count"
+set key bottom right noenhanced
+$plot \
+  "$points" using (strcol(1) eq "bullet" ? \$2 : 1/0):3 with linespoints linecolor "black" \
+    pointtype 7 pointsize 1 title "Bullet 3.24 soft body, 10 iterations (over-stretches; at 256 x 256 it blows up)", \
+  x * 19.0 / 6561 with lines dashtype 2 linecolor "black" title "linear in the particle count"
 PLOT
 echo "wrote $png and $csv"
