@@ -5,7 +5,9 @@
 // (adaptive.enabled=false) and against the uniform mesh one level finer than that (twice the cells
 // each way, bending springs scaled as docs/scenario.md "Stiffness across levels" says). Reports
 // wall time per simulated second (remeshing and recompiling included), particle counts, and how
-// far each shape is from the uniform fine one at the same material points.
+// far each shape is from the uniform fine one at the same material points (mean_gap_pct,
+// max_gap_pct) and as a surface, whichever material point lies where (surface_gap_*: a fold that
+// fell the other way counts by how far the surface moved, not by how far its points travelled).
 //
 // Two floors under the gaps, from the uniform fine run again:
 // - the noise floor, with gravity changed by one part in 10^11: how far the fine run is from
@@ -135,6 +137,8 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   state.counters["max_particles"] = max_particles;
   state.counters["mean_gap_pct"] = gap.mean_pct;
   state.counters["max_gap_pct"] = gap.max_pct;
+  state.counters["surface_gap_mean_pct"] = gap.surface_mean_pct;
+  state.counters["surface_gap_max_pct"] = gap.surface_max_pct;
 }
 
 // per scene, the fine run first, so that the others compare against its shapes without running it

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/shape_distance.hpp"
 #include "lib/simulation.hpp"
 
 namespace tissu::bench {
@@ -51,23 +52,32 @@ inline RecordedRun run_recorded(const std::string& scenario_file,
 
 /// Over the sampled instants: the mean of the mean distance between the same material points of
 /// `run` and `reference`, and the largest distance seen, as percentages of the cloth's rest
-/// diagonal.
+/// diagonal; and the same for the distance between the two surfaces, whichever material point
+/// lies where (surface_distance_between(): a fold that fell the other way counts by how far the
+/// surface moved).
 struct ShapeGap {
   double mean_pct = 0.0;
   double max_pct = 0.0;
+  double surface_mean_pct = 0.0;
+  double surface_max_pct = 0.0;
 };
 
 inline ShapeGap shape_gap(const RecordedRun& run, const RecordedRun& reference) {
-  double mean_m = 0.0, max_m = 0.0;
+  double mean_m = 0.0, max_m = 0.0, surface_mean_m = 0.0, surface_max_m = 0.0;
   for (std::size_t k = 0; k < run.shapes.size(); ++k) {
     const ShapeDistance d = material_point_distance(run.shapes[k], reference.shapes.at(k));
     mean_m += d.mean_m / run.shapes.size();
     max_m = std::max(max_m, d.max_m);
+    const ShapeDistance s =
+        surface_distance_between(run.shapes[k].current, reference.shapes.at(k).current);
+    surface_mean_m += s.mean_m / run.shapes.size();
+    surface_max_m = std::max(surface_max_m, s.max_m);
   }
   Eigen::AlignedBox3d box;
   for (const Eigen::Vector3d& X : reference.shapes.front().rest_m) box.extend(X);
-  const double size_m = box.diagonal().norm();
-  return {100.0 * mean_m / size_m, 100.0 * max_m / size_m};
+  const double percent_per_m = 100.0 / box.diagonal().norm();
+  return {percent_per_m * mean_m, percent_per_m * max_m, percent_per_m * surface_mean_m,
+          percent_per_m * surface_max_m};
 }
 
 }  // namespace tissu::bench

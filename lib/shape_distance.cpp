@@ -2,10 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "solver/collision/primitive_distance.hpp"
+#include "topology/mesh_obstacle.hpp"
 
 namespace tissu {
 namespace {
@@ -71,6 +75,25 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
     ++out.points;
   }
   if (out.points > 0) out.mean_m /= out.points;
+  return out;
+}
+
+ShapeDistance surface_distance_between(const IndexedMesh& a, const IndexedMesh& b) {
+  ShapeDistance out;
+  double mean_m = 0.0;
+  for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+    // an open mesh's distance field is unsigned; a closed one's is signed, hence the magnitude
+    const std::shared_ptr<const SurfaceQuery> surface = make_mesh_surface(*to);
+    double sum_m = 0.0;
+    for (const Eigen::Vector3d& x : from->vertices) {
+      const double gap_m = std::abs(surface->distance(x).distance_m);
+      sum_m += gap_m;
+      out.max_m = std::max(out.max_m, gap_m);
+    }
+    if (!from->vertices.empty()) mean_m += 0.5 * sum_m / static_cast<double>(from->vertices.size());
+    out.points += static_cast<int>(from->vertices.size());
+  }
+  out.mean_m = mean_m;
   return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// How far apart two runs of the same cloth are, whatever their meshes: the same material point is
-/// found on both and its current positions compared. CGAL-free.
+/// found on both and its current positions compared; or, whichever material point is where, how
+/// far each surface is from the other. CGAL-free header.
 
 #include <vector>
 
@@ -30,5 +31,14 @@ struct ShapeDistance {
 /// Throws std::invalid_argument when `other` has no face or the sizes disagree.
 ShapeDistance material_point_distance(const MaterialSurface& other,
                                       const MaterialSurface& reference);
+
+/// How far two surfaces are from each other as shapes, whichever material point lies where: the
+/// distance from each vertex of one to the nearest point of the other's faces, both ways (the
+/// symmetric Chamfer distance over vertices). `mean_m` is the mean of the two directions' means,
+/// `max_m` the largest (the Hausdorff distance over vertices), `points` the vertices of both. A
+/// fold that falls the other way, or cloth that slid along itself, counts only by how much the
+/// surface moved, not by how far its material points travelled. Throws MeshError (naming the
+/// element) when either surface has no face to measure against.
+ShapeDistance surface_distance_between(const IndexedMesh& a, const IndexedMesh& b);
 
 }  // namespace tissu

@@ -105,6 +105,51 @@ TEST(MaterialPointDistance, BothLipsOfATearHoldItsPoints) {
   EXPECT_NEAR(d.mean_m, 0.05, 1e-12);  // half of the points are the right half's
 }
 
+TEST(SurfaceDistanceBetween, TheSameSurfaceIsAtZeroWhereverItsMaterialPointsLie) {
+  // the sheet's material points slid along it (x -> x^2 maps [0, 1] onto itself): every point
+  // moved, the surface did not
+  const auto slid = [](const Eigen::Vector3d& X) -> Eigen::Vector3d {
+    return Eigen::Vector3d(X.x() * X.x(), X.y(), X.z());
+  };
+  const MaterialSurface flat =
+      sheet(8, GridCells::triangles, [](const Eigen::Vector3d& X) { return X; });
+  const MaterialSurface moved_along = sheet(5, GridCells::quads, slid);
+  EXPECT_GT(material_point_distance(moved_along, flat).max_m, 0.2);
+  const ShapeDistance d = surface_distance_between(moved_along.current, flat.current);
+  EXPECT_LT(d.max_m, 1e-12);
+  EXPECT_EQ(d.points, 9 * 9 + 6 * 6);
+}
+
+TEST(SurfaceDistanceBetween, ASheetMovedAcrossItselfIsThatFarBothWays) {
+  const MaterialSurface flat =
+      sheet(4, GridCells::triangles, [](const Eigen::Vector3d& X) { return X; });
+  const MaterialSurface lifted = sheet(7, GridCells::triangles, [](const Eigen::Vector3d& X) {
+    return Eigen::Vector3d(X + Eigen::Vector3d(0.0, 0.02, 0.0));
+  });
+  const ShapeDistance d = surface_distance_between(flat.current, lifted.current);
+  EXPECT_NEAR(d.mean_m, 0.02, 1e-12);
+  EXPECT_NEAR(d.max_m, 0.02, 1e-12);
+}
+
+TEST(SurfaceDistanceBetween, AveragesTheTwoDirections) {
+  // the sheet's left half against the whole: the half's points all lie on the whole, the whole's
+  // points at x > 0.5 m lie x - 0.5 m beyond the half's edge
+  const MaterialSurface whole =
+      sheet(10, GridCells::triangles, [](const Eigen::Vector3d& X) { return X; });
+  GridOptions o;
+  o.width = 0.5;
+  o.height = 0.5;
+  o.cells_u = 3;
+  o.cells_v = 3;
+  o.cells = GridCells::triangles;
+  const ShapeDistance d = surface_distance_between(make_grid_mesh(o), whole.current);
+  double beyond_m = 0.0;  // over the whole's 11 x 11 vertices, 0.1 m apart along x
+  for (int i = 6; i <= 10; ++i) beyond_m += 11 * (0.1 * i - 0.5);
+  EXPECT_NEAR(d.mean_m, 0.5 * (0.0 + beyond_m / (11 * 11)), 1e-12);
+  EXPECT_NEAR(d.max_m, 0.5, 1e-12);
+  EXPECT_EQ(d.points, 4 * 4 + 11 * 11);
+}
+
 TEST(MaterialPointDistance, RefusesSurfacesWithoutFacesOrRestPositions) {
   const MaterialSurface fine = sheet(4, GridCells::triangles, bulged);
   MaterialSurface empty;
