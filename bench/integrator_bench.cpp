@@ -343,44 +343,36 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
       ->UseManualTime()                                                           \
       ->Unit(benchmark::kSecond)
 
-TISSU_DEMO(curtain, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"",
-           "simulation.substeps=10");
+/// Demo/<scenario>_<integrator>_x<substeps>: the integrator at that many steps per frame.
+#define TISSU_DEMO_STEPS(scenario, integrator, substeps)                                      \
+  TISSU_DEMO(scenario, integrator##_x##substeps, "simulation.integrator=\"" #integrator "\"", \
+             "simulation.substeps=" #substeps)
+
+TISSU_DEMO_STEPS(curtain, implicit_euler, 10);
 TISSU_DEMO(curtain, newton_converged_x1, converged_settings);
-TISSU_DEMO(curtain, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=1");
+TISSU_DEMO_STEPS(curtain, quasi_newton, 1);
 TISSU_DEMO(curtain, quasi_newton_tight_x1, "simulation.integrator=\"quasi_newton\"",
            "simulation.substeps=1", "simulation.quasi_newton.tolerance=1e-3");
-TISSU_DEMO(curtain, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
+TISSU_DEMO_STEPS(curtain, newton, 1);
 TISSU_DEMO(curtain, pd_direct_x1, "simulation.integrator=\"projective_dynamics\"",
            "simulation.substeps=1");
-TISSU_DEMO(drape, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"",
-           "simulation.substeps=10");
-TISSU_DEMO(drape, quasi_newton_x10, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=10");
-TISSU_DEMO(drape, quasi_newton_x1, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=1");
-TISSU_DEMO(drape, newton_x1, "simulation.integrator=\"newton\"", "simulation.substeps=1");
-TISSU_DEMO(drape, newton_x10, "simulation.integrator=\"newton\"", "simulation.substeps=10");
-TISSU_DEMO(tearing, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"",
-           "simulation.substeps=10");
+TISSU_DEMO_STEPS(drape, implicit_euler, 10);
+TISSU_DEMO_STEPS(drape, quasi_newton, 10);
+TISSU_DEMO_STEPS(drape, quasi_newton, 1);
+TISSU_DEMO_STEPS(drape, newton, 1);
+TISSU_DEMO_STEPS(drape, newton, 10);
+TISSU_DEMO_STEPS(tearing, implicit_euler, 10);
 TISSU_DEMO(tearing, implicit_euler_x100, small_step_settings);
-TISSU_DEMO(tearing, quasi_newton_x10, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=10");
-TISSU_DEMO(tearing, quasi_newton_x20, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=20");
-TISSU_DEMO(tearing, quasi_newton_x30, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=30");
-TISSU_DEMO(tearing, newton_x10, "simulation.integrator=\"newton\"", "simulation.substeps=10");
-TISSU_DEMO(tearing, newton_x20, "simulation.integrator=\"newton\"", "simulation.substeps=20");
-TISSU_DEMO(tearing_ball, implicit_euler_x10, "simulation.integrator=\"implicit_euler\"",
-           "simulation.substeps=10");
+TISSU_DEMO_STEPS(tearing, quasi_newton, 10);
+TISSU_DEMO_STEPS(tearing, quasi_newton, 20);
+TISSU_DEMO_STEPS(tearing, quasi_newton, 30);
+TISSU_DEMO_STEPS(tearing, newton, 10);
+TISSU_DEMO_STEPS(tearing, newton, 20);
+TISSU_DEMO_STEPS(tearing_ball, implicit_euler, 10);
 TISSU_DEMO(tearing_ball, implicit_euler_x100, small_step_settings);
-TISSU_DEMO(tearing_ball, quasi_newton_x10, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=10");
-TISSU_DEMO(tearing_ball, quasi_newton_x20, "simulation.integrator=\"quasi_newton\"",
-           "simulation.substeps=20");
-TISSU_DEMO(tearing_ball, implicit_euler_x30, "simulation.integrator=\"implicit_euler\"",
-           "simulation.substeps=30");
+TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 10);
+TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 20);
+TISSU_DEMO_STEPS(tearing_ball, implicit_euler, 30);
 
 }  // namespace
 }  // namespace tissu
