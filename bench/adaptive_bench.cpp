@@ -20,6 +20,9 @@
 // To try other settings, put --set overrides for the adaptive runs in TISSU_ADAPTIVE_SET,
 // separated by spaces, e.g.
 //   TISSU_ADAPTIVE_SET="adaptive.curvature=3 adaptive.every=2" adaptive_bench
+// and to compare against a reference nearer its converged motion, TISSU_REFERENCE_STEPS=k runs
+// the uniform fine mesh and its floors at k times their steps per frame, and adds the fine mesh
+// at its scenario's own steps (fine_scene_steps) to the runs compared with it.
 
 #include <benchmark/benchmark.h>
 
@@ -50,11 +53,35 @@ const std::map<std::string, Scene>& scenes() {
   return all;
 }
 
-/// The uniform fine run of `scene`, from its benchmark if it ran first, else from a run of its own.
-bench::RecordedRun& fine_run(const std::string& scene) {
+/// TISSU_REFERENCE_STEPS=k: the uniform fine runs (the reference and its two floors) take k
+/// times their scenario's steps per frame, for a reference nearer its converged motion.
+int reference_step_factor() {
+  const char* text = std::getenv("TISSU_REFERENCE_STEPS");
+  const int factor = text ? std::atoi(text) : 1;
+  if (factor < 1) throw std::runtime_error("TISSU_REFERENCE_STEPS: expected an integer >= 1");
+  return factor;
+}
+
+/// The overrides that run `file` at `factor` times its steps per frame (checked against the step
+/// limits as any override is).
+std::vector<std::string> more_steps(const std::string& file, int factor) {
+  if (factor == 1) return {};
+  const int substeps = load_scenario(TISSU_DATA_DIR "/scenarios/" + file, {}).substeps;
+  return {"simulation.substeps=" + std::to_string(factor * substeps)};
+}
+
+/// The uniform fine runs by scene, kept by their benchmark.
+std::map<std::string, bench::RecordedRun>& fine_runs() {
   static std::map<std::string, bench::RecordedRun> runs;
-  bench::RecordedRun& run = runs[scene];
-  if (run.shapes.empty()) run = bench::run_recorded(scenes().at(scene).uniform_file, {});
+  return runs;
+}
+
+/// The uniform fine run of `scene`, from its benchmark if it ran first, else from a run of its own.
+const bench::RecordedRun& fine_run(const std::string& scene) {
+  bench::RecordedRun& run = fine_runs()[scene];
+  const std::string& file = scenes().at(scene).uniform_file;
+  if (run.shapes.empty())
+    run = bench::run_recorded(file, more_steps(file, reference_step_factor()));
   return run;
 }
 
@@ -62,6 +89,7 @@ enum class Mesh {
   uniform_fine,
   fine_nudged,
   fine_half_step,
+  fine_scene_steps,  ///< the fine mesh at its scenario's own steps (with TISSU_REFERENCE_STEPS)
   adaptive,
   uniform_mid,
   uniform_coarse
@@ -102,10 +130,15 @@ std::vector<std::string> adaptive_overrides() {
 
 void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh) {
   const Scene& files = scenes().at(scene);
-  const bool fine =
+  const bool reference_or_floor =
       mesh == Mesh::uniform_fine || mesh == Mesh::fine_nudged || mesh == Mesh::fine_half_step;
+  const bool fine = reference_or_floor || mesh == Mesh::fine_scene_steps;
   const std::string& file = fine ? files.uniform_file : files.adaptive_file;
   std::vector<std::string> overrides;
+  if (reference_or_floor) {
+    const int factor = reference_step_factor() * (mesh == Mesh::fine_half_step ? 2 : 1);
+    overrides = more_steps(file, factor);
+  }
   std::function<void(Scenario&)> edit;
   if (mesh == Mesh::adaptive) overrides = adaptive_overrides();
   if (mesh == Mesh::uniform_mid || mesh == Mesh::uniform_coarse) {
@@ -115,16 +148,12 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   if (mesh == Mesh::fine_nudged) {
     edit = [](Scenario& s) { s.solver.environment.gravity *= 1.0 + gravity_nudge; };
   }
-  if (mesh == Mesh::fine_half_step) {  // as an override, checked against the step limits
-    const int substeps = load_scenario(TISSU_DATA_DIR "/scenarios/" + file, {}).substeps;
-    overrides.push_back("simulation.substeps=" + std::to_string(2 * substeps));
-  }
   bench::RecordedRun run;
   for (auto _ : state) {
     run = bench::run_recorded(file, overrides, edit);
     state.SetIterationTime(run.wall_s);
   }
-  if (mesh == Mesh::uniform_fine) fine_run(scene) = run;
+  if (mesh == Mesh::uniform_fine) fine_runs()[scene] = run;
   double mean_particles = 0.0;
   int max_particles = 0;
   for (const FrameStats& row : run.frames) {
@@ -150,7 +179,10 @@ void register_all() {
           std::pair{"fine_nudged", Mesh::fine_nudged},
           std::pair{"fine_half_step", Mesh::fine_half_step}, std::pair{"adaptive", Mesh::adaptive},
           std::pair{"uniform_mid", Mesh::uniform_mid},
-          std::pair{"uniform_coarse", Mesh::uniform_coarse}}) {
+          std::pair{"uniform_coarse", Mesh::uniform_coarse},
+          std::pair{"fine_scene_steps", Mesh::fine_scene_steps}}) {
+      // at the scenario's own steps, the fine mesh is the reference itself
+      if (mesh == Mesh::fine_scene_steps && reference_step_factor() == 1) continue;
       benchmark::RegisterBenchmark(("BM_Adaptivity/" + scene + "/" + name).c_str(), BM_Adaptivity,
                                    scene, mesh)
           ->Iterations(1)
