@@ -150,6 +150,15 @@ TEST(SurfaceDistanceBetween, AveragesTheTwoDirections) {
   EXPECT_EQ(d.points, 4 * 4 + 11 * 11);
 }
 
+TEST(SurfaceDistanceBetween, RefusesASurfaceWithoutFaces) {
+  const MaterialSurface flat =
+      sheet(2, GridCells::triangles, [](const Eigen::Vector3d& X) { return X; });
+  IndexedMesh points_only;
+  points_only.vertices = flat.current.vertices;
+  EXPECT_THROW(surface_distance_between(points_only, flat.current), MeshError);
+  EXPECT_THROW(surface_distance_between(flat.current, points_only), MeshError);
+}
+
 TEST(MaterialPointDistance, RefusesSurfacesWithoutFacesOrRestPositions) {
   const MaterialSurface fine = sheet(4, GridCells::triangles, bulged);
   MaterialSurface empty;
