@@ -13,7 +13,8 @@ build_dir=${TISSU_BUILD_DIR:-build/release}
 png=docs/integrators.png
 csv=docs/integrators.csv
 points=$(mktemp)
-trap 'rm -f "$points"' EXIT
+peer_csv=$(mktemp)
+trap 'rm -f "$points" "$peer_csv"' EXIT
 
 fail() { echo "plot_integrators: $*" >&2; exit 1; }
 [[ $# -eq 0 || ( $# -eq 1 && $1 == --plot-only ) ]] || fail "usage: $0 [--plot-only]"
@@ -24,11 +25,9 @@ if [[ ${1:-} != --plot-only ]]; then
   [[ -x $bench && -x $peer ]] || fail "$bench or $peer not found; build them with scripts/build.sh"
   OMP_NUM_THREADS=1 "$bench" --benchmark_filter=HangingSheet \
     --benchmark_out="$csv" --benchmark_out_format=csv
-  peer_csv=$(mktemp)
   "$peer" --benchmark_out="$peer_csv" --benchmark_out_format=csv
   # with its own header: its counters are not the same columns
   grep -E '^(name,|"BulletSheet/)' "$peer_csv" >>"$csv" || fail "no Bullet rows in $peer_csv"
-  rm -f "$peer_csv"
 fi
 [[ -f $csv ]] || fail "$csv not found; run without --plot-only first"
 
@@ -65,7 +64,7 @@ set grid
 set key bottom right noenhanced
 $plot \
   "$points" using (strcol(1) eq "bullet" ? \$2 : 1/0):3 with linespoints linecolor "black" \
-    pointtype 7 pointsize 1 title "Bullet 3.24 soft body, 10 iterations (over-stretches; at 256 x 256 it blows up)", \
+    pointtype 7 pointsize 1 title "Bullet soft body, 10 iterations (over-stretches, docs/benchmarks.md)", \
   x * 19.0 / 6561 with lines dashtype 2 linecolor "black" title "linear in the particle count"
 PLOT
 echo "wrote $png and $csv"
