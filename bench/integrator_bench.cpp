@@ -19,7 +19,7 @@
 // demos' integrator before issue 16) and with the others, at 10 or 1 steps per frame (xN): wall
 // time per simulated second and the shape gap to today's run at the same material points, every
 // second (mean and max, % of the cloth's rest diagonal); and converged_gap_*, the same to the
-// converged backward-Euler motion at one step per frame (Newton to 1e-4; for the tearing demos,
+// converged backward-Euler motion at one step per frame (Newton to 1e-4; for scenes that tear,
 // whose tears are checked once per step, implicit Euler at 100 steps per frame; none with
 // TISSU_SHEET_REFERENCES=0). Also the edges torn in all and the pieces at the end.
 //
@@ -275,15 +275,17 @@ const std::vector<std::string> converged_settings = {
     "simulation.integrator=\"newton\"", "simulation.substeps=1", "simulation.newton.tolerance=1e-4",
     "simulation.newton.max_iterations=100", "simulation.newton.cg_max_iterations=1000"};
 
-/// The tearing demos' converged motion: tears are checked once per step (at most
-/// max_tears_per_step), so one step per frame is not their converged motion; ten times smaller
+/// A tearing scene's converged motion: tears are checked once per step (at most
+/// max_tears_per_step), so one step per frame is not its converged motion; ten times smaller
 /// steps than today's are (implicit Euler and Newton tear the same there, docs/benchmarks.md).
 const std::vector<std::string> small_step_settings = {"simulation.integrator=\"implicit_euler\"",
                                                       "simulation.substeps=100"};
 
-/// The settings of `scenario_file`'s converged motion.
+/// The settings of `scenario_file`'s converged motion: small_step_settings where it tears.
 const std::vector<std::string>& converged_settings_of(const std::string& scenario_file) {
-  return scenario_file.rfind("tearing", 0) == 0 ? small_step_settings : converged_settings;
+  const bool tears =
+      load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, {}).tearing.enabled;
+  return tears ? small_step_settings : converged_settings;
 }
 
 /// The reference runs, by settings (todays_settings or converged_settings_of()) and scenario file.

@@ -79,8 +79,7 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
 }
 
 ShapeDistance surface_distance_between(const IndexedMesh& a, const IndexedMesh& b) {
-  ShapeDistance out;
-  double mean_m = 0.0;
+  ShapeDistance out;  // mean_m: the mean of the two directions' means
   for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
     // an open mesh's distance field is unsigned; a closed one's is signed, hence the magnitude
     const std::shared_ptr<const SurfaceQuery> surface = make_mesh_surface(*to);
@@ -90,10 +89,10 @@ ShapeDistance surface_distance_between(const IndexedMesh& a, const IndexedMesh& 
       sum_m += gap_m;
       out.max_m = std::max(out.max_m, gap_m);
     }
-    if (!from->vertices.empty()) mean_m += 0.5 * sum_m / static_cast<double>(from->vertices.size());
+    if (!from->vertices.empty())
+      out.mean_m += 0.5 * sum_m / static_cast<double>(from->vertices.size());
     out.points += static_cast<int>(from->vertices.size());
   }
-  out.mean_m = mean_m;
   return out;
 }
 
