@@ -15,6 +15,8 @@
 #include "lib/shape_distance.hpp"
 #include "lib/simulation.hpp"
 
+#include <unistd.h>
+
 namespace tissu::bench {
 
 inline constexpr int frames_between_shape_samples = 30;  // 1 s at the demos' 30 frames/s
@@ -25,6 +27,22 @@ struct RecordedRun {
   std::vector<FrameStats> frames;       ///< frame 0 too
   std::vector<MaterialSurface> shapes;  ///< every frames_between_shape_samples frames
 };
+
+/// The directory the runs of this process write their stats and point caches to, one per process
+/// so that benchmarks run side by side do not remove each other's files (tissu_bench_<pid> in the
+/// temporary directory); removed when the process exits.
+inline const std::filesystem::path& run_directory() {
+  struct Directory {
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("tissu_bench_" + std::to_string(::getpid()));
+    ~Directory() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Directory directory;
+  return directory.path;
+}
 
 /// Runs data/scenarios/<scenario_file> with `overrides`, then `edit` when given, without images or
 /// meshes; throws if the run fails.
@@ -37,7 +55,7 @@ inline RecordedRun run_recorded(const std::string& scenario_file,
   if (edit) edit(scenario);
   RecordedRun run;
   RunOptions options;
-  options.output_dir = std::filesystem::temp_directory_path() / "tissu_bench";
+  options.output_dir = run_directory();
   options.on_frame = [&](const FrameStats& row) { run.frames.push_back(row); };
   options.on_surface = [&](int frame, const MaterialSurface& surface) {
     if (frame % frames_between_shape_samples == 0) run.shapes.push_back(surface);
