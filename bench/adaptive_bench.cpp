@@ -22,7 +22,9 @@
 //   TISSU_ADAPTIVE_SET="adaptive.curvature=3 adaptive.every=2" adaptive_bench
 // and to compare against a reference nearer its converged motion, TISSU_REFERENCE_STEPS=k runs
 // the uniform fine mesh and its floors at k times their steps per frame, and adds the fine mesh
-// at its scenario's own steps (fine_scene_steps) to the runs compared with it.
+// at the compared runs' steps (fine_scene_steps) to the runs compared with it.
+// TISSU_COMPARED_STEPS=j runs the compared meshes (adaptive, uniform mid and coarse, and that fine
+// mesh) at j times their scenario's steps: speed-ups at equal steps, against the same reference.
 
 #include <benchmark/benchmark.h>
 
@@ -53,14 +55,21 @@ const std::map<std::string, Scene>& scenes() {
   return all;
 }
 
-/// TISSU_REFERENCE_STEPS=k: the uniform fine runs (the reference and its two floors) take k
-/// times their scenario's steps per frame, for a reference nearer its converged motion.
-int reference_step_factor() {
-  const char* text = std::getenv("TISSU_REFERENCE_STEPS");
+/// The integer >= 1 in the environment variable `name`, 1 if unset.
+int step_factor(const char* name) {
+  const char* text = std::getenv(name);
   const int factor = text ? std::atoi(text) : 1;
-  if (factor < 1) throw std::runtime_error("TISSU_REFERENCE_STEPS: expected an integer >= 1");
+  if (factor < 1) throw std::runtime_error(std::string(name) + ": expected an integer >= 1");
   return factor;
 }
+
+/// TISSU_REFERENCE_STEPS=k: the uniform fine runs (the reference and its two floors) take k
+/// times their scenario's steps per frame, for a reference nearer its converged motion.
+int reference_step_factor() { return step_factor("TISSU_REFERENCE_STEPS"); }
+
+/// TISSU_COMPARED_STEPS=j: the runs compared with the reference take j times their scenario's
+/// steps per frame.
+int compared_step_factor() { return step_factor("TISSU_COMPARED_STEPS"); }
 
 /// The overrides that run `file` at `factor` times its steps per frame (checked against the step
 /// limits as any override is).
@@ -89,7 +98,7 @@ enum class Mesh {
   uniform_fine,
   fine_nudged,
   fine_half_step,
-  fine_scene_steps,  ///< the fine mesh at its scenario's own steps (with TISSU_REFERENCE_STEPS)
+  fine_scene_steps,  ///< the fine mesh at the compared runs' steps, when not the reference's
   adaptive,
   uniform_mid,
   uniform_coarse
@@ -134,13 +143,14 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
       mesh == Mesh::uniform_fine || mesh == Mesh::fine_nudged || mesh == Mesh::fine_half_step;
   const bool fine = reference_or_floor || mesh == Mesh::fine_scene_steps;
   const std::string& file = fine ? files.uniform_file : files.adaptive_file;
-  std::vector<std::string> overrides;
-  if (reference_or_floor) {
-    const int factor = reference_step_factor() * (mesh == Mesh::fine_half_step ? 2 : 1);
-    overrides = more_steps(file, factor);
-  }
+  const int step_factor = reference_or_floor
+                              ? reference_step_factor() * (mesh == Mesh::fine_half_step ? 2 : 1)
+                              : compared_step_factor();
+  std::vector<std::string> overrides = more_steps(file, step_factor);
   std::function<void(Scenario&)> edit;
-  if (mesh == Mesh::adaptive) overrides = adaptive_overrides();
+  if (mesh == Mesh::adaptive) {  // after the steps: TISSU_ADAPTIVE_SET has the last word
+    for (std::string& word : adaptive_overrides()) overrides.push_back(std::move(word));
+  }
   if (mesh == Mesh::uniform_mid || mesh == Mesh::uniform_coarse) {
     overrides.push_back("adaptive.enabled=false");
   }
@@ -181,8 +191,9 @@ void register_all() {
           std::pair{"uniform_mid", Mesh::uniform_mid},
           std::pair{"uniform_coarse", Mesh::uniform_coarse},
           std::pair{"fine_scene_steps", Mesh::fine_scene_steps}}) {
-      // at the scenario's own steps, the fine mesh is the reference itself
-      if (mesh == Mesh::fine_scene_steps && reference_step_factor() == 1) continue;
+      // at the reference's steps, the fine mesh is the reference itself
+      if (mesh == Mesh::fine_scene_steps && reference_step_factor() == compared_step_factor())
+        continue;
       benchmark::RegisterBenchmark(("BM_Adaptivity/" + scene + "/" + name).c_str(), BM_Adaptivity,
                                    scene, mesh)
           ->Iterations(1)
