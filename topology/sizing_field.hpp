@@ -29,9 +29,10 @@ struct SizingInputs {
 /// - strain: (|eps_e| / strain_threshold)^2 / L_f^2, eps_e the edge's strain and L_f the face's
 ///   longest rest edge: the face is split while an edge is strained past the threshold;
 /// and per face:
-/// - obstacles: |grad h|^2 / h^2 averaged over the face's corners, h the height of the face's
-///   corners above the tangent plane of the obstacle nearest each corner (at least the obstacle's
-///   thickness), grad in rest space: zero for cloth lying flat on a floor;
+/// - obstacles: |grad h|^2 / (16 h^2) averaged over the face's corners, h the height of the
+///   face's corners above the tangent plane of the obstacle nearest each corner (at least the
+///   obstacle's thickness), grad in rest space: zero for cloth lying flat on a floor; on a curved
+///   obstacle, faces whose chords sag by about the thickness (ARCSim's metric / 16);
 /// then at least 1 / max_edge_length_m^2 when a maximum is set.
 void compute_sizing(ClothComplex& lcc, const RefinementOptions& options,
                     const SizingInputs& inputs);
