@@ -65,11 +65,15 @@ int step_factor(const char* name) {
 
 /// TISSU_REFERENCE_STEPS=k: the uniform fine runs (the reference and its two floors) take k
 /// times their scenario's steps per frame, for a reference nearer its converged motion.
-int reference_step_factor() { return step_factor("TISSU_REFERENCE_STEPS"); }
+int reference_step_factor() {
+  return step_factor("TISSU_REFERENCE_STEPS");
+}
 
 /// TISSU_COMPARED_STEPS=j: the runs compared with the reference take j times their scenario's
 /// steps per frame.
-int compared_step_factor() { return step_factor("TISSU_COMPARED_STEPS"); }
+int compared_step_factor() {
+  return step_factor("TISSU_COMPARED_STEPS");
+}
 
 /// The overrides that run `file` at `factor` times its steps per frame (checked against the step
 /// limits as any override is).

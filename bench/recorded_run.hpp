@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "lib/shape_distance.hpp"
 #include "lib/simulation.hpp"
-
-#include <unistd.h>
 
 namespace tissu::bench {
 
@@ -33,8 +33,8 @@ struct RecordedRun {
 /// temporary directory); removed when the process exits.
 inline const std::filesystem::path& run_directory() {
   struct Directory {
-    std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                 ("tissu_bench_" + std::to_string(::getpid()));
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("tissu_bench_" + std::to_string(::getpid()));
     ~Directory() {
       std::error_code ignored;
       std::filesystem::remove_all(path, ignored);
