@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 
 #include "cloth_test_support.hpp"
@@ -153,21 +155,34 @@ TEST_F(SizingFieldTest,
   test::expect_valid_with_mass(lcc, expected_mass_kg(), "after refining near the floor");
 }
 
-/// The sheet laid on a sphere of radius `radius_m` centred `centre`, every vertex `thickness_m`
-/// above it, at the geodesic distance from the sheet's centre that it has at rest (an azimuthal
-/// equidistant map: lengths from the centre kept).
-void lay_on_sphere(ClothComplex& lcc, const Eigen::Vector3d& centre, double radius_m,
-                   double thickness_m) {
-  const Eigen::Vector3d sheet_centre(0.95, -0.1, 0.75);  // of sheet(): its normal is -y
+/// The centre of sheet() (m).
+Eigen::Vector3d sheet_middle() {
+  const GridOptions o = sheet();
+  return o.origin + 0.5 * (o.width * o.u_axis + o.height * o.v_axis);
+}
+
+/// The centre of a ball of radius `radius_m` on which sheet() lies at its centre, `thickness_m`
+/// above it, on the side its normal u x v points to.
+Eigen::Vector3d ball_under_sheet(double radius_m, double thickness_m) {
+  const GridOptions o = sheet();
+  return sheet_middle() + (radius_m + thickness_m) * o.u_axis.cross(o.v_axis);
+}
+
+/// The sheet laid on the ball of ball_under_sheet(), every vertex `thickness_m` above it, at the
+/// geodesic distance from the sheet's centre that it has at rest (an azimuthal equidistant map:
+/// lengths from the centre kept).
+void lay_on_sphere(ClothComplex& lcc, double radius_m, double thickness_m) {
+  const Eigen::Vector3d middle = sheet_middle();
+  const Eigen::Vector3d centre = ball_under_sheet(radius_m, thickness_m);
+  const Eigen::Vector3d up = (middle - centre).normalized();
   const double lying_m = radius_m + thickness_m;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
-    const Eigen::Vector3d offset = to_eigen(v->info().rest_position) - sheet_centre;
+    const Eigen::Vector3d offset = to_eigen(v->info().rest_position) - middle;
     const double distance_m = offset.norm();
     const double angle = distance_m / lying_m;
     const Eigen::Vector3d along =
-        distance_m > 0.0 ? Eigen::Vector3d(offset / distance_m) : Eigen::Vector3d::UnitX();
-    v->point() = to_point(
-        centre + lying_m * (std::cos(angle) * Eigen::Vector3d::UnitY() + std::sin(angle) * along));
+        distance_m > 0.0 ? Eigen::Vector3d(offset / distance_m) : sheet().u_axis;
+    v->point() = to_point(centre + lying_m * (std::cos(angle) * up + std::sin(angle) * along));
   }
 }
 
@@ -178,10 +193,9 @@ TEST_F(SizingFieldTest,
   // the 6.25 cm cells' 8.4 cm diagonals by 1.5 mm. ARCSim's metric alone would split both
   // (L > sqrt(2 R t) = 4.9 cm).
   const double radius_m = 0.6, thickness_m = 0.002;
-  const Eigen::Vector3d centre(0.95, -0.1 - radius_m - thickness_m, 0.75);
   std::vector<Obstacle> ball(1);
   ball[0].shape = ObstacleShape::sphere;
-  ball[0].position = centre;
+  ball[0].position = ball_under_sheet(radius_m, thickness_m);
   ball[0].radius_m = radius_m;
   ball[0].thickness_m = thickness_m;
   RefinementOptions options;
@@ -191,11 +205,11 @@ TEST_F(SizingFieldTest,
     ClothComplex fine;
     build_cloth_complex(make_grid_mesh(test::grid(cells, cells * 2 / 3, GridCells::triangles)),
                         density_kg_per_m2, springs, fine);
-    lay_on_sphere(fine, centre, radius_m, thickness_m);
+    lay_on_sphere(fine, radius_m, thickness_m);
     EXPECT_EQ(refine(fine, options, springs, inputs).splits, 0) << cells << " cells";
   }
   build_cloth_complex(make_grid_mesh(sheet()), density_kg_per_m2, springs, lcc);
-  lay_on_sphere(lcc, centre, radius_m, thickness_m);
+  lay_on_sphere(lcc, radius_m, thickness_m);
   EXPECT_GT(refine(lcc, options, springs, inputs).splits, 0) << "12 cells";
   test::expect_valid_with_mass(lcc, expected_mass_kg(), "after refining on the ball");
 }
