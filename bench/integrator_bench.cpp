@@ -316,7 +316,8 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
     run = bench::run_recorded(scenario_file, overrides);
     state.SetIterationTime(run.wall_s);
   }
-  if (overrides == todays_settings || overrides == converged_settings_of(scenario_file)) {
+  const std::vector<std::string>& converged = converged_settings_of(scenario_file);
+  if (overrides == todays_settings || overrides == converged) {
     reference_runs()[overrides][scenario_file] = run;  // the others' reference
   }
   const bench::RecordedRun& today = reference_run(todays_settings, scenario_file);
@@ -335,7 +336,7 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
   state.counters["pieces"] = run.frames.back().pieces;
   if (references_wanted()) {
     const bench::ShapeGap converged_gap =
-        bench::shape_gap(run, reference_run(converged_settings_of(scenario_file), scenario_file));
+        bench::shape_gap(run, reference_run(converged, scenario_file));
     state.counters["converged_gap_mean_pct"] = converged_gap.mean_pct;
     state.counters["converged_gap_max_pct"] = converged_gap.max_pct;
   }
