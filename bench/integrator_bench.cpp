@@ -339,6 +339,7 @@ void BM_Demo(benchmark::State& state, const std::string& scenario_file,
         bench::shape_gap(run, reference_run(converged, scenario_file));
     state.counters["converged_gap_mean_pct"] = converged_gap.mean_pct;
     state.counters["converged_gap_max_pct"] = converged_gap.max_pct;
+    state.counters["converged_surface_gap_mean_pct"] = converged_gap.surface_mean_pct;
   }
 }
 
@@ -362,6 +363,13 @@ TISSU_DEMO(curtain, quasi_newton_tight_x1, "simulation.integrator=\"quasi_newton
 TISSU_DEMO_STEPS(curtain, newton, 1);
 TISSU_DEMO(curtain, pd_direct_x1, "simulation.integrator=\"projective_dynamics\"",
            "simulation.substeps=1");
+/// Demo/<scenario>_<integrator>_penalty_x<substeps>: the same with the obstacles held inside the
+/// minimisation too (simulation.obstacle_penalty = 100).
+#define TISSU_DEMO_PENALTY(scenario, integrator, substeps)                                  \
+  TISSU_DEMO(scenario, integrator##_penalty_x##substeps,                                    \
+             "simulation.integrator=\"" #integrator "\"", "simulation.substeps=" #substeps, \
+             "simulation.obstacle_penalty=100")
+
 TISSU_DEMO_STEPS(drape, implicit_euler, 10);
 TISSU_DEMO(drape, implicit_euler_x100, small_step_settings);
 TISSU_DEMO_STEPS(drape, implicit_euler, 20);
@@ -371,6 +379,12 @@ TISSU_DEMO_STEPS(drape, quasi_newton, 10);
 TISSU_DEMO_STEPS(drape, quasi_newton, 1);
 TISSU_DEMO_STEPS(drape, newton, 1);
 TISSU_DEMO_STEPS(drape, newton, 10);
+TISSU_DEMO_PENALTY(drape, newton, 1);
+TISSU_DEMO_PENALTY(drape, newton, 2);
+TISSU_DEMO_PENALTY(drape, newton, 4);
+TISSU_DEMO_PENALTY(drape, quasi_newton, 1);
+TISSU_DEMO_PENALTY(drape, quasi_newton, 2);
+TISSU_DEMO_PENALTY(drape, quasi_newton, 4);
 TISSU_DEMO_STEPS(tearing, implicit_euler, 10);
 TISSU_DEMO(tearing, implicit_euler_x100, small_step_settings);
 TISSU_DEMO_STEPS(tearing, quasi_newton, 10);

@@ -28,6 +28,14 @@ void check_state_size(const SpringModel& model, const State& state) {
   }
 }
 
+/// The obstacle contacts that the step's minimiser held inside the step, if it did.
+const std::vector<ContactPlane>* minimised_contacts(const SolverParams& params,
+                                                    const StepWorkspace& workspace) {
+  if (params.integrator == Integrator::newton) return &workspace.newton.common.contacts;
+  if (params.integrator == Integrator::quasi_newton) return &workspace.quasi_newton.common.contacts;
+  return nullptr;
+}
+
 /// The particles whose position differs between `before` and `after` (3#P each), in order.
 void moved_particles(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
                      std::vector<int>& moved) {
@@ -132,9 +140,15 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
   if (finite) {  // a NaN would leave the hash cells of self-collision undefined
     // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
     const double end_time_s = state.time + params.time_step;
-    workspace.obstacle_contacts =
-        resolve_obstacle_contacts(model, params.obstacles, params.time_step, end_time_s,
-                                  workspace.step_start_x, state, workspace.obstacle_holding_normal);
+    workspace.obstacle_penalty_impulse.resize(0, 0);
+    const std::vector<ContactPlane>* held = minimised_contacts(params, workspace);
+    if (held != nullptr && !held->empty()) {
+      contact_normal_impulses(model, *held, static_cast<int>(params.obstacles.size()),
+                              params.time_step, state.x, workspace.obstacle_penalty_impulse);
+    }
+    workspace.obstacle_contacts = resolve_obstacle_contacts(
+        model, params.obstacles, params.time_step, end_time_s, workspace.step_start_x, state,
+        workspace.obstacle_holding_normal, workspace.obstacle_penalty_impulse);
     const bool both = params.self_collision.enabled && !params.obstacles.empty();
     if (both) workspace.before_self_collision_x = state.x;
     workspace.self_collision = resolve_self_collisions(

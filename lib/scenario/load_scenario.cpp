@@ -200,6 +200,8 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation.number_or("cg_tolerance", s.solver.implicit.cg_tolerance, between(1e-16, 1, ""));
   s.solver.implicit.cg_max_iterations =
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
+  s.solver.obstacle_penalty =
+      simulation.number_or("obstacle_penalty", s.solver.obstacle_penalty, non_negative(""));
   s.threads = simulation.integer_or("threads", 0, 0, 1024);
   s.solver.pd = read_pd(simulation.optional_object("pd"));
   s.solver.newton = read_newton(simulation.optional_object("newton"));

@@ -58,7 +58,8 @@ double carry_bound_m(const Obstacle& obstacle, const ObstaclePlacement& before,
 /// at the end of the step had it moved with the obstacle's surface.
 std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstaclePlacement& before,
                                        const ObstaclePlacement& after, double h, double time_s,
-                                       const Eigen::Vector3d& start, Eigen::Ref<Eigen::Vector3d> x,
+                                       const Eigen::Vector3d& start, double step_normal_impulse,
+                                       Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
   SurfaceDistance surface = surface_distance(obstacle, after, x);
   // A signed distance changes by at most the distance moved (it is 1-Lipschitz: its sign flips on
@@ -99,8 +100,9 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
   const double v_n = relative.dot(n);
   // the normal impulse per unit mass: the approach it stops, or the push out of the surface over
   // the step if that is more (a cloth squeezed between two surfaces is pushed out of each at
-  // every step without approaching either, and is held by friction)
-  const double dv_n = std::max(-v_n, pushed_m / h);
+  // every step without approaching either, and is held by friction), plus what the step's own
+  // contact penalty gave
+  const double dv_n = std::max(-v_n, pushed_m / h) + step_normal_impulse;
   if (!(dv_n > 0.0)) return n;  // leaving, and not pushed
   const Eigen::Vector3d v_t = relative - v_n * n;
   const double speed_t = v_t.norm();
@@ -125,16 +127,18 @@ struct StepPlacements {
 };
 
 /// Every obstacle against particle p (see resolve_obstacle_contacts); returns how many touched it
-/// and sets `holding_normal` to the last one's outward normal.
+/// and sets `holding_normal` to the last one's outward normal. `step_normal_impulse` is p's column
+/// of resolve_obstacle_contacts()'s (m/s), or null.
 int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacements& placements,
                      double time_step_s, double time_s, const Eigen::Vector3d& start,
-                     Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v,
-                     Eigen::Ref<Eigen::Vector3d> holding_normal) {
+                     const double* step_normal_impulse, Eigen::Ref<Eigen::Vector3d> x,
+                     Eigen::Ref<Eigen::Vector3d> v, Eigen::Ref<Eigen::Vector3d> holding_normal) {
   const auto& [before, after] = placements;
   int touched = 0;
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    const double impulse = step_normal_impulse != nullptr ? step_normal_impulse[k] : 0.0;
     if (const auto normal =
-            resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, x, v)) {
+            resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, impulse, x, v)) {
       holding_normal = *normal;
       ++touched;
     }
@@ -160,18 +164,21 @@ int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacement
 
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state, Eigen::Matrix3Xd& holding_normal) {
+                              State& state, Eigen::Matrix3Xd& holding_normal,
+                              const Eigen::MatrixXd& step_normal_impulse) {
   const int particles = model.particle_count();
   holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
+  const bool impulses = step_normal_impulse.size() > 0;
   const StepPlacements placements(obstacles, time_step_s, time_s);
   int contacts = 0;
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
-    contacts += resolve_particle(obstacles, placements, time_step_s, time_s,
-                                 start_x.segment<3>(3 * p), state.x.segment<3>(3 * p),
-                                 state.v.segment<3>(3 * p), holding_normal.col(p));
+    contacts +=
+        resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p),
+                         impulses ? &step_normal_impulse(0, p) : nullptr, state.x.segment<3>(3 * p),
+                         state.v.segment<3>(3 * p), holding_normal.col(p));
   }
   return contacts;
 }
@@ -192,7 +199,7 @@ void resolve_obstacle_contacts_of(const std::vector<int>& moved,
     }
     if (!inside) continue;  // within an obstacle's thickness at most: left to the cloth's layers
     Eigen::Vector3d unused_normal;
-    resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p),
+    resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p), nullptr,
                      state.x.segment<3>(3 * p), state.v.segment<3>(3 * p), unused_normal);
   }
 }

@@ -35,9 +35,13 @@ namespace tissu {
 /// Pinned particles are left alone. Sets column p of `holding_normal` (3 x #P, resized) to the
 /// outward unit normal of the obstacle that held particle p (the last one, if several did), zero
 /// where none did, and returns the number of contacts.
+/// `step_normal_impulse` (#obstacles x #P, m/s, or empty) is the normal impulse per unit mass each
+/// obstacle already gave each particle during the step (a minimiser's contact penalty,
+/// contact_planes.hpp): friction is then bounded by mu times it plus dv_n.
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
-                              State& state, Eigen::Matrix3Xd& holding_normal);
+                              State& state, Eigen::Matrix3Xd& holding_normal,
+                              const Eigen::MatrixXd& step_normal_impulse = Eigen::MatrixXd());
 
 /// The same for those of the particles `moved` (indices, none pinned) that another response
 /// (self-collision) has moved inside an obstacle, beyond its surface: obstacles have the last word,

@@ -126,7 +126,11 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
                   workspace.spring_stretch[model.couplings(c, 1)];
     }
   }
-  if (gradient == nullptr) return energy_j;
+  if (gradient == nullptr) {
+    if (potential.contacts != nullptr)
+      energy_j += add_contact_potential(*potential.contacts, x, nullptr);
+    return energy_j;
+  }
 
   const ParticleSpringIncidence& incidence = model.incidence;
   gradient->resize(3 * particles);
@@ -149,6 +153,8 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
     }
     gradient->segment<3>(3 * p) = g;
   }
+  if (potential.contacts != nullptr)
+    energy_j += add_contact_potential(*potential.contacts, x, gradient);
   return energy_j;
 }
 

@@ -5,7 +5,8 @@
 /// eq. 7; Gast et al. 2015, "Optimization integrator for large time steps"):
 ///   E(x) = sum over free i of [ m_i/(2h^2) |x_i - y_i|^2 + c m_i/(2h) |x_i - x_n,i|^2 ]
 ///        + sum over springs s of [ k_s/2 (|d_s| - l_s)^2 + nu_s/(2h) ((d_s - d_n,s) . u_n,s)^2 ]
-///        + sum over couplings c of Gamma_c dl_a dl_b                                       (J),
+///        + sum over couplings c of Gamma_c dl_a dl_b
+///        + sum over contact planes of k/2 max(0, (p - x_i) . n)^2                         (J),
 /// with y = x_n + h v_n + h^2 f_ext / m (gravity and wind at the start of the step), d_s =
 /// x_i - x_j, u_n,s the spring's direction at the start of the step. Its minimiser is the backward
 /// Euler step x_{n+1}, v_{n+1} = (x_{n+1} - x_n)/h: grad E = 0 is
@@ -16,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include "solver/collision/contact_planes.hpp"
 #include "solver/spring_model.hpp"
 
 namespace tissu {
@@ -26,6 +28,8 @@ struct StepPotential {
   const Eigen::VectorXd* start_x = nullptr;   ///< 3#P x_n (m)
   const Eigen::VectorXd* inertial = nullptr;  ///< 3#P y (m)
   double air_damping = 0.0;                   ///< c (1/s), taken implicitly
+  /// obstacle contacts held inside the step (their penalties are added to E), or none
+  const std::vector<ContactPlane>* contacts = nullptr;
 };
 
 /// Per-spring scratch of evaluate_step_potential(); meaningless between calls.

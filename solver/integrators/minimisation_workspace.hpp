@@ -5,6 +5,9 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
+#include "solver/collision/contact_planes.hpp"
 #include "solver/integrators/incremental_potential.hpp"
 #include "solver/pd/pd_direct_solver.hpp"
 #include "solver/pd/pd_system.hpp"
@@ -26,6 +29,7 @@ struct MinimisationWorkspace {
   Eigen::VectorXd trial_x;           ///< 3#P the line search's point (m)
   Eigen::VectorXd trial_gradient;    ///< 3#P grad E there (N)
   Eigen::VectorXd preconditioned;    ///< 3#P (M/h^2 + L)^-1 q, zero on pinned particles (m)
+  std::vector<ContactPlane> contacts;  ///< the step's obstacle contacts in its potential
 };
 
 }  // namespace tissu

@@ -22,7 +22,26 @@ void check_options(const NewtonOptions& options) {
   }
 }
 
+// a contact plane's penalty, where it acts, adds k n n^T to its particle's diagonal block
+void add_contact_hessian(const std::vector<ContactPlane>& contacts, const Eigen::VectorXd& x,
+                         bool coupled, NewtonWorkspace& newton) {
+  for (const ContactPlane& plane : contacts) {
+    if (contact_depth_m(plane, x.segment<3>(3 * plane.particle)) == 0.0) continue;
+    const Eigen::Matrix3d block = plane.stiffness_n_per_m * plane.normal * plane.normal.transpose();
+    newton.hessian.block(newton.hessian.diagonal[plane.particle]) += upper_triangle(block);
+    if (coupled) {
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+          newton.coupled_hessian.coeffRef(3 * plane.particle + r, 3 * plane.particle + c) +=
+              block(r, c);
+        }
+      }
+    }
+  }
+}
+
 // H = M (1/h^2 + c/h) + sum of the springs' positive semidefinite blocks + the couplings' terms
+// + the acting contact penalties' blocks
 void assemble_hessian(const SpringModel& model, const StepPotential& potential,
                       const Eigen::VectorXd& x, NewtonWorkspace& newton) {
   const int springs = model.spring_count();
@@ -55,6 +74,7 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
                                  newton.diagonal, true, newton.coupled_hessian);
     add_coupling_jacobian_blocks(model, newton.pattern, x, -1.0, true, newton.coupled_hessian);
   }
+  if (potential.contacts != nullptr) add_contact_hessian(*potential.contacts, x, coupled, newton);
 }
 
 // preconditioned = an approximation of H^-1 residual (zero on pinned particles)

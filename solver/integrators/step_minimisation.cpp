@@ -28,6 +28,9 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   potential.start_x = &state.x;
   potential.inertial = &workspace.inertial;
   potential.air_damping = params.environment.air_damping;
+  find_contact_planes(model, params.obstacles, params.obstacle_penalty, h, state.time + h, state.x,
+                      workspace.x, workspace.contacts);
+  if (!workspace.contacts.empty()) potential.contacts = &workspace.contacts;
   prepare_step_potential(model, potential, workspace.potential);
   energy_j = evaluate_step_potential(model, potential, workspace.x, workspace.potential,
                                      &workspace.gradient);

@@ -16,7 +16,8 @@ namespace tissu {
 /// Starts a step: f_ext (gravity and wind; air damping is left to the potential, implicit), y,
 /// x = x_0 = x_n + h v_n, with `use_pd_matrix` the PD matrix for this model and h and its
 /// factorisation (a Newton step preconditioned by multigrid needs neither), the potential's start
-/// directions, and E(x_0) with its gradient. Fills `potential` (which points into `workspace` and
+/// directions and obstacle contacts (with SolverParams::obstacle_penalty), and E(x_0) with its
+/// gradient. Fills `potential` (which points into `workspace` and
 /// `state`). False when something is not finite (or the PD matrix cannot be factorised): the step
 /// is then non_finite.
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,

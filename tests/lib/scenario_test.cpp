@@ -143,8 +143,13 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
            "preconditioner": "pd_matrix"})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3})",
-       "simulation.pd.max_estimated_error=0"});
+       "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
+  EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
+  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.obstacle_penalty,
+                   0.0);
+  EXPECT_EQ(with("simulation.obstacle_penalty", "-1"),
+            "dir/s.json: simulation.obstacle_penalty: expected a number >= 0, got -1");
   EXPECT_DOUBLE_EQ(s.solver.newton.tolerance, 0.01);
   EXPECT_EQ(s.solver.newton.max_iterations, 7);
   EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);

@@ -1,0 +1,79 @@
+#include "solver/collision/contact_planes.hpp"
+
+#include <algorithm>
+
+namespace tissu {
+
+void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,
+                         double stiffness, double time_step_s, double end_time_s,
+                         const Eigen::VectorXd& start_x, const Eigen::VectorXd& first_iterate,
+                         std::vector<ContactPlane>& planes) {
+  planes.clear();
+  if (obstacles.empty() || !(stiffness > 0.0)) return;
+  std::vector<ObstaclePlacement> before, after;
+  for (const Obstacle& obstacle : obstacles) {
+    before.push_back(place(obstacle, end_time_s - time_step_s));
+    after.push_back(place(obstacle, end_time_s));
+  }
+  const double per_kg = stiffness / (time_step_s * time_step_s);  // beta / h^2 (1/s^2)
+  for (int p = 0; p < model.particle_count(); ++p) {
+    if (model.pinned[p]) continue;
+    const Eigen::Vector3d start = start_x.segment<3>(3 * p);
+    const Eigen::Vector3d x0 = first_iterate.segment<3>(3 * p);
+    const double travel_m = (x0 - start).norm();
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+      const Obstacle& obstacle = obstacles[k];
+      // linearised at x_0, where the step's solution is first looked for, unless x_0 has gone
+      // past the obstacle's middle (its nearest point then on the far side): then where the
+      // step starts (outside: the last step's contacts put it there), moved with the
+      // obstacle's surface to the step's end
+      const Eigen::Vector3d from = obstacle.motion.moves() || obstacle.animation
+                                       ? carry_with_surface(obstacle, before[k], after[k], start)
+                                       : start;
+      const SurfaceDistance at_start = surface_distance(obstacle, after[k], from);
+      const SurfaceDistance at_x0 = surface_distance(obstacle, after[k], x0);
+      const bool same_side = at_x0.normal.dot(at_start.normal) > 0.0;
+      const SurfaceDistance& surface = same_side ? at_x0 : at_start;
+      const Eigen::Vector3d& at = same_side ? x0 : from;
+      if (!(std::min(at_start.distance_m, at_x0.distance_m) <
+            2.0 * obstacle.thickness_m + travel_m)) {
+        continue;
+      }
+      ContactPlane plane;
+      plane.particle = p;
+      plane.obstacle = static_cast<int>(k);
+      plane.normal = surface.normal;
+      plane.point = at + (obstacle.thickness_m - surface.distance_m) * surface.normal;
+      plane.stiffness_n_per_m = per_kg * model.mass[p];
+      planes.push_back(plane);
+    }
+  }
+}
+
+double add_contact_potential(const std::vector<ContactPlane>& planes, const Eigen::VectorXd& x,
+                             Eigen::VectorXd* gradient) {
+  double energy_j = 0.0;
+  for (const ContactPlane& plane : planes) {
+    const double depth_m = contact_depth_m(plane, x.segment<3>(3 * plane.particle));
+    if (depth_m == 0.0) continue;
+    energy_j += 0.5 * plane.stiffness_n_per_m * depth_m * depth_m;
+    if (gradient != nullptr) {
+      gradient->segment<3>(3 * plane.particle) -=
+          (plane.stiffness_n_per_m * depth_m) * plane.normal;
+    }
+  }
+  return energy_j;
+}
+
+void contact_normal_impulses(const SpringModel& model, const std::vector<ContactPlane>& planes,
+                             int obstacle_count, double time_step_s, const Eigen::VectorXd& x,
+                             Eigen::MatrixXd& impulse_m_per_s) {
+  impulse_m_per_s.setZero(obstacle_count, model.particle_count());
+  for (const ContactPlane& plane : planes) {
+    const double depth_m = contact_depth_m(plane, x.segment<3>(3 * plane.particle));
+    impulse_m_per_s(plane.obstacle, plane.particle) +=
+        time_step_s * plane.stiffness_n_per_m * depth_m * model.inverse_mass[plane.particle];
+  }
+}
+
+}  // namespace tissu

@@ -1,0 +1,158 @@
+// Obstacle contacts inside the minimisers' step: which particles get a plane, the penalty's
+// gradient, where it holds a particle, and the friction it gives at frame-rate steps.
+
+#include "solver/collision/contact_planes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/step.hpp"
+#include "tests/solver/test_models.hpp"
+
+namespace tissu {
+namespace {
+
+constexpr double g = 9.81;         // m/s^2
+constexpr double h = 1.0 / 30.0;   // s: one step per frame
+constexpr double penalty = 100.0;  // beta
+
+/// A plane through the origin tilted by `slope_rad` about x, rising towards +y.
+Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
+  Obstacle plane;
+  plane.normal = Eigen::Vector3d(0.0, -std::sin(slope_rad), std::cos(slope_rad));
+  plane.static_friction = mu_static;
+  plane.kinetic_friction = mu_kinetic;
+  return plane;
+}
+
+SolverParams minimiser_params(Integrator integrator, const Obstacle& obstacle) {
+  SolverParams params;
+  params.integrator = integrator;
+  params.time_step = h;
+  params.environment.gravity = {0.0, 0.0, -g};
+  params.obstacles = {obstacle};
+  params.obstacle_penalty = penalty;
+  return params;
+}
+
+TEST(ContactPlanes, OnlyFreeParticlesWithinReachOfAnObstacleGetAPlane) {
+  // four particles above a floor of thickness 5 mm: touching, 8 mm up, 2 cm up but falling 2 cm
+  // in the step, 2 cm up and still; the first pinned in a second model
+  SpringModel model;
+  model.mass = Eigen::VectorXd::Constant(4, 0.01);
+  model.pinned.assign(4, 0);
+  model.springs.resize(0, 2);
+  finalize_model(model);
+  Eigen::VectorXd start(12), first(12);
+  start << 0, 0, 0.005, 1, 0, 0.008, 2, 0, 0.02, 3, 0, 0.02;
+  first = start;
+  first[8] = 0.0;  // the third falls 2 cm
+  Obstacle floor;
+  floor.thickness_m = 0.005;
+  std::vector<ContactPlane> planes;
+  find_contact_planes(model, {floor}, penalty, h, h, start, first, planes);
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[0].particle, 0);
+  EXPECT_EQ(planes[1].particle, 1);
+  EXPECT_EQ(planes[2].particle, 2);
+  for (const ContactPlane& plane : planes) {
+    EXPECT_NEAR(plane.point.z(), floor.thickness_m, 1e-15);
+    EXPECT_EQ(plane.normal, Eigen::Vector3d::UnitZ());
+    EXPECT_DOUBLE_EQ(plane.stiffness_n_per_m, penalty * 0.01 / (h * h));
+  }
+  find_contact_planes(model, {floor}, 0.0, h, h, start, first, planes);
+  EXPECT_TRUE(planes.empty()) << "beta = 0 holds nothing inside the step";
+  model.pinned[0] = 1;
+  model.inverse_mass[0] = 0.0;
+  find_contact_planes(model, {floor}, penalty, h, h, start, first, planes);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].particle, 1);
+}
+
+TEST(ContactPlanes, APenaltysGradientIsItsEnergysDerivative) {
+  std::vector<ContactPlane> planes(3);
+  planes[0] = {0, 0, {0.0, 0.0, 0.01}, Eigen::Vector3d(0.0, 0.6, 0.8), 300.0};
+  planes[1] = {1, 0, {1.0, 0.0, 0.0}, Eigen::Vector3d::UnitX(), 50.0};  // not reached
+  planes[2] = {0, 1, {0.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(), 120.0};
+  Eigen::VectorXd x(6);
+  x << 0.002, -0.003, -0.004, 1.5, 0.0, 0.0;
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(6);
+  const double energy_j = add_contact_potential(planes, x, &gradient);
+  EXPECT_GT(energy_j, 0.0);
+  EXPECT_EQ(gradient.segment<3>(3), Eigen::Vector3d::Zero());
+  const double dx = 1e-7;
+  for (int i = 0; i < 6; ++i) {
+    Eigen::VectorXd plus = x, minus = x;
+    plus[i] += dx;
+    minus[i] -= dx;
+    const double slope = (add_contact_potential(planes, plus, nullptr) -
+                          add_contact_potential(planes, minus, nullptr)) /
+                         (2.0 * dx);
+    EXPECT_NEAR(gradient[i], slope, 1e-6 * (1.0 + std::abs(slope))) << "coordinate " << i;
+  }
+}
+
+class Minimisers : public ::testing::TestWithParam<Integrator> {};
+
+TEST_P(Minimisers, AFallingParticleIsStoppedInsideTheStepAsThePenaltySays) {
+  // The step minimises m/(2h^2) |x - y|^2 + k/2 depth^2 with k = beta m/h^2: a particle whose
+  // inertial target y lies D below the plane ends D / (1 + beta) below it.
+  Obstacle floor;
+  floor.thickness_m = 0.004;
+  State state;
+  const Eigen::Vector3d v(0.0, 0.0, -1.0);
+  const SpringModel model = test::lone_particle({0.0, 0.0, 0.01}, v, state);
+  const SolverParams params = minimiser_params(GetParam(), floor);
+  const double target_z = 0.01 + h * v.z() - g * h * h;
+  const double expected_z = floor.thickness_m - (floor.thickness_m - target_z) / (1.0 + penalty);
+  StepWorkspace workspace;
+  ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
+  // the projection after the step then lifts it by that depth and stops it
+  EXPECT_NEAR(state.x.z(), floor.thickness_m, 1e-12);
+  EXPECT_NEAR(state.v.z(), 0.0, 1e-12);
+  ASSERT_EQ(workspace.obstacle_penalty_impulse.cols(), 1);
+  EXPECT_NEAR(workspace.obstacle_penalty_impulse(0, 0),
+              penalty * (floor.thickness_m - expected_z) / h, 1e-6);
+}
+
+TEST_P(Minimisers, StaticFrictionHoldsAParticleOnASlopeAtOneStepPerFrame) {
+  // tan 20 deg = 0.36 < mu_s = 0.5. The penalty stops the particle's fall inside the step, so
+  // the projection after it removes only the penalty's depth, 1/(1 + beta) of the normal impulse:
+  // friction must be bounded by the penalty's impulse too, or the particle slides (as the drape
+  // slid off its ball before the impulse was passed on).
+  const Obstacle plane = slope(20.0 * M_PI / 180.0, 0.5, 0.4);
+  const Eigen::Vector3d start = plane.thickness_m * plane.normal;
+  State state;
+  const SpringModel model = test::lone_particle(start, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = minimiser_params(GetParam(), plane);
+  StepWorkspace workspace;
+  for (int n = 0; n < 90; ++n) ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
+  EXPECT_LT((state.x - start).norm(), 1e-12) << "held for 3 s";
+  EXPECT_NEAR(workspace.obstacle_penalty_impulse(0, 0), g * std::cos(20.0 * M_PI / 180.0) * h,
+              0.02 * g * h);
+}
+
+TEST_P(Minimisers, KineticFrictionSlowsASlidingParticleAsCoulombSaysAtOneStepPerFrame) {
+  // down a 30-degree slope with mu_k = 0.3: a = g (sin 30 - 0.3 cos 30) = 2.36 m/s^2 along it,
+  // to the penalty's 1/(1 + beta) of the normal force
+  const double angle_rad = 30.0 * M_PI / 180.0;
+  const Obstacle plane = slope(angle_rad, 0.3, 0.3);
+  const Eigen::Vector3d down_slope(0.0, -std::cos(angle_rad), -std::sin(angle_rad));
+  State state;
+  const SpringModel model =
+      test::lone_particle(plane.thickness_m * plane.normal, Eigen::Vector3d::Zero(), state);
+  const SolverParams params = minimiser_params(GetParam(), plane);
+  StepWorkspace workspace;
+  for (int n = 0; n < 30; ++n) ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
+  const double a = g * (std::sin(angle_rad) - 0.3 * std::cos(angle_rad));
+  EXPECT_NEAR(state.v.dot(down_slope), a, 0.02 * a);
+  EXPECT_NEAR(state.x.dot(plane.normal), plane.thickness_m, 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, Minimisers,
+                         ::testing::Values(Integrator::newton, Integrator::quasi_newton),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+}  // namespace
+}  // namespace tissu
