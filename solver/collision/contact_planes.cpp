@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solver/parallel.hpp"
+
 namespace tissu {
 
 void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,
@@ -16,7 +18,13 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
     after.push_back(place(obstacle, end_time_s));
   }
   const double per_kg = stiffness / (time_step_s * time_step_s);  // beta / h^2 (1/s^2)
-  for (int p = 0; p < model.particle_count(); ++p) {
+  // particles in parallel, each into its own slots, gathered in order afterwards: deterministic
+  const int particles = model.particle_count();
+  const std::size_t per_particle = obstacles.size();
+  std::vector<ContactPlane> slots(particles * per_particle);
+  std::vector<char> filled(slots.size(), 0);
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+  for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
     const Eigen::Vector3d start = start_x.segment<3>(3 * p);
     const Eigen::Vector3d x0 = first_iterate.segment<3>(3 * p);
@@ -39,14 +47,17 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
             2.0 * obstacle.thickness_m + travel_m)) {
         continue;
       }
-      ContactPlane plane;
+      ContactPlane& plane = slots[p * per_particle + k];
+      filled[p * per_particle + k] = 1;
       plane.particle = p;
       plane.obstacle = static_cast<int>(k);
       plane.normal = surface.normal;
       plane.point = at + (obstacle.thickness_m - surface.distance_m) * surface.normal;
       plane.stiffness_n_per_m = per_kg * model.mass[p];
-      planes.push_back(plane);
     }
+  }
+  for (std::size_t slot = 0; slot < slots.size(); ++slot) {
+    if (filled[slot]) planes.push_back(slots[slot]);
   }
 }
 
