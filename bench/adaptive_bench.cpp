@@ -25,6 +25,13 @@
 // at the compared runs' steps (fine_scene_steps) to the runs compared with it.
 // TISSU_COMPARED_STEPS=j runs the compared meshes (adaptive, uniform mid and coarse, and that fine
 // mesh) at j times their scenario's steps: speed-ups at equal steps, against the same reference.
+// TISSU_FRAMES=n makes every run n frames long.
+//
+// The flag follows no reference instant by instant (gusty wind on flapping cloth amplifies any
+// change: its noise floor is 5 %), so its runs are also compared by the statistics of their
+// motions from 1 s on (bench::motion_statistics_gap): the gap between the time-averaged shapes
+// (mean_shape_gap_pct), between how far each material point flaps about its mean
+// (spread_gap_pct), and the ratio of their mean spreads (spread_ratio).
 
 #include <benchmark/benchmark.h>
 
@@ -83,6 +90,22 @@ std::vector<std::string> more_steps(const std::string& file, int factor) {
   return {"simulation.substeps=" + std::to_string(factor * substeps)};
 }
 
+/// TISSU_FRAMES=n: every run simulates n frames instead of its scenario's, for motion statistics
+/// over a longer window (the flag's).
+std::vector<std::string> frame_count_override() {
+  const char* text = std::getenv("TISSU_FRAMES");
+  if (text == nullptr) return {};
+  if (std::atoi(text) < 1) throw std::runtime_error("TISSU_FRAMES: expected an integer >= 1");
+  return {"simulation.frames=" + std::to_string(std::atoi(text))};
+}
+
+/// The overrides of every run of `file` at `factor` times its steps per frame.
+std::vector<std::string> run_overrides(const std::string& file, int factor) {
+  std::vector<std::string> overrides = more_steps(file, factor);
+  for (std::string& word : frame_count_override()) overrides.push_back(std::move(word));
+  return overrides;
+}
+
 /// The uniform fine runs by scene, kept by their benchmark.
 std::map<std::string, bench::RecordedRun>& fine_runs() {
   static std::map<std::string, bench::RecordedRun> runs;
@@ -94,7 +117,7 @@ const bench::RecordedRun& fine_run(const std::string& scene) {
   bench::RecordedRun& run = fine_runs()[scene];
   const std::string& file = scenes().at(scene).uniform_file;
   if (run.shapes.empty())
-    run = bench::run_recorded(file, more_steps(file, reference_step_factor()));
+    run = bench::run_recorded(file, run_overrides(file, reference_step_factor()));
   return run;
 }
 
@@ -110,6 +133,10 @@ enum class Mesh {
 
 /// The noise floor's change to gravity, relative.
 constexpr double gravity_nudge = 1e-11;
+
+/// The flag's motion statistics are taken from then on (s): after it has left its flat start and
+/// the first gust has reached it.
+constexpr double flapping_from_s = 1.0;
 
 /// The grid cloth of `scenario` with twice the cells each way, one level of refinement (two
 /// bisections) finer: the same pins (a side pinned at every n-th vertex, n > 1, at every 2n-th;
@@ -150,7 +177,7 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   const int step_factor = reference_or_floor
                               ? reference_step_factor() * (mesh == Mesh::fine_half_step ? 2 : 1)
                               : compared_step_factor();
-  std::vector<std::string> overrides = more_steps(file, step_factor);
+  std::vector<std::string> overrides = run_overrides(file, step_factor);
   std::function<void(Scenario&)> edit;
   if (mesh == Mesh::adaptive) {  // after the steps: TISSU_ADAPTIVE_SET has the last word
     for (std::string& word : adaptive_overrides()) overrides.push_back(std::move(word));
@@ -182,6 +209,13 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   state.counters["max_gap_pct"] = gap.max_pct;
   state.counters["surface_gap_mean_pct"] = gap.surface_mean_pct;
   state.counters["surface_gap_max_pct"] = gap.surface_max_pct;
+  if (scene == "flag") {  // no run follows another instant by instant: compare the statistics
+    const bench::MotionStatisticsGap statistics =
+        bench::motion_statistics_gap(run, fine_run(scene), flapping_from_s);
+    state.counters["mean_shape_gap_pct"] = statistics.mean_shape_pct;
+    state.counters["spread_gap_pct"] = statistics.spread_pct;
+    state.counters["spread_ratio"] = statistics.spread_ratio;
+  }
 }
 
 // per scene, the fine run first, so that the others compare against its shapes without running it

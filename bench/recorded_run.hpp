@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
@@ -20,12 +21,15 @@
 namespace tissu::bench {
 
 inline constexpr int frames_between_shape_samples = 30;  // 1 s at the demos' 30 frames/s
+inline constexpr int frames_between_motion_samples = 3;  // 10 per second at 30 frames/s
 
 struct RecordedRun {
   double wall_s = 0.0;
   double simulated_s = 0.0;
+  double frame_rate_hz = 0.0;
   std::vector<FrameStats> frames;       ///< frame 0 too
   std::vector<MaterialSurface> shapes;  ///< every frames_between_shape_samples frames
+  std::vector<MaterialSurface> motion;  ///< every frames_between_motion_samples frames
 };
 
 /// The directory the runs of this process write their stats and point caches to, one per process
@@ -59,12 +63,14 @@ inline RecordedRun run_recorded(const std::string& scenario_file,
   options.on_frame = [&](const FrameStats& row) { run.frames.push_back(row); };
   options.on_surface = [&](int frame, const MaterialSurface& surface) {
     if (frame % frames_between_shape_samples == 0) run.shapes.push_back(surface);
+    if (frame % frames_between_motion_samples == 0) run.motion.push_back(surface);
   };
   const auto start = std::chrono::steady_clock::now();
   const RunResult result = run_scenario(scenario, options);
   run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!result.ok) throw std::runtime_error(result.failure);
   run.simulated_s = scenario.frames / scenario.frame_rate;
+  run.frame_rate_hz = scenario.frame_rate;
   return run;
 }
 
@@ -96,6 +102,64 @@ inline ShapeGap shape_gap(const RecordedRun& run, const RecordedRun& reference) 
   const double percent_per_m = 100.0 / box.diagonal().norm();
   return {percent_per_m * mean_m, percent_per_m * max_m, percent_per_m * surface_mean_m,
           percent_per_m * surface_max_m};
+}
+
+/// How the statistics of two runs' motions differ, for a motion that no run can follow instant by
+/// instant (a flag in gusty wind: a change of gravity in its 11th digit moves it by 5 %). Over
+/// the motion samples from `from_s` on, each material point of the reference (its vertices) has
+/// a mean position and a spread about it (the root mean square distance from that mean); the
+/// gaps are means over the points, in % of the cloth's rest diagonal:
+/// - `mean_shape_pct`: between the two runs' mean positions (the time-averaged shape);
+/// - `spread_pct`: between the two runs' spreads (how far each point flaps);
+/// - `spread_ratio`: the run's mean spread over the reference's (dimensionless).
+struct MotionStatisticsGap {
+  double mean_shape_pct = 0.0;
+  double spread_pct = 0.0;
+  double spread_ratio = 0.0;
+};
+
+inline MotionStatisticsGap motion_statistics_gap(const RecordedRun& run,
+                                                 const RecordedRun& reference, double from_s) {
+  const auto first = static_cast<std::size_t>(
+      std::ceil(from_s * reference.frame_rate_hz / frames_between_motion_samples - 1e-9));
+  const std::size_t samples = std::min(run.motion.size(), reference.motion.size());
+  if (first >= samples)
+    throw std::invalid_argument("motion_statistics_gap: no sample after from_s");
+  const std::vector<Eigen::Vector3d>& points = reference.motion.front().rest_m;
+  const std::size_t count = points.size();
+  // per point: the sums of x and of |x|^2 over the samples, for each run
+  std::vector<Eigen::Vector3d> sum_run(count, Eigen::Vector3d::Zero()), sum_ref = sum_run;
+  std::vector<double> square_run(count, 0.0), square_ref(count, 0.0);
+  for (std::size_t k = first; k < samples; ++k) {
+    if (reference.motion[k].current.vertices.size() != count) {
+      throw std::invalid_argument("motion_statistics_gap: the reference's mesh changed");
+    }
+    const std::vector<Eigen::Vector3d> here = material_point_positions(run.motion[k], points);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Eigen::Vector3d& x_ref = reference.motion[k].current.vertices[i];
+      sum_run[i] += here[i];
+      sum_ref[i] += x_ref;
+      square_run[i] += here[i].squaredNorm();
+      square_ref[i] += x_ref.squaredNorm();
+    }
+  }
+  const double n = static_cast<double>(samples - first);
+  double mean_gap_m = 0.0, spread_gap_m = 0.0, spread_run_m = 0.0, spread_ref_m = 0.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Eigen::Vector3d mean_run = sum_run[i] / n, mean_ref = sum_ref[i] / n;
+    // spread^2 = mean |x|^2 - |mean x|^2 (clamped at 0 against round-off)
+    const double spread_run = std::sqrt(std::max(0.0, square_run[i] / n - mean_run.squaredNorm()));
+    const double spread_ref = std::sqrt(std::max(0.0, square_ref[i] / n - mean_ref.squaredNorm()));
+    mean_gap_m += (mean_run - mean_ref).norm() / count;
+    spread_gap_m += std::abs(spread_run - spread_ref) / count;
+    spread_run_m += spread_run / count;
+    spread_ref_m += spread_ref / count;
+  }
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& X : points) box.extend(X);
+  const double percent_per_m = 100.0 / box.diagonal().norm();
+  return {percent_per_m * mean_gap_m, percent_per_m * spread_gap_m,
+          spread_ref_m > 0.0 ? spread_run_m / spread_ref_m : 0.0};
 }
 
 }  // namespace tissu::bench

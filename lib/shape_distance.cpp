@@ -30,14 +30,16 @@ std::vector<Triangle> triangles_of(const IndexedMesh& mesh) {
 
 }  // namespace
 
-ShapeDistance material_point_distance(const MaterialSurface& other,
-                                      const MaterialSurface& reference) {
+std::vector<Eigen::Vector3d> material_point_positions(
+    const MaterialSurface& other, const std::vector<Eigen::Vector3d>& rest_points_m,
+    const std::vector<Eigen::Vector3d>* near_m) {
   if (other.rest_m.size() != other.current.vertices.size() ||
-      reference.rest_m.size() != reference.current.vertices.size()) {
-    throw std::invalid_argument("material_point_distance: one rest position per vertex expected");
+      (near_m != nullptr && near_m->size() != rest_points_m.size())) {
+    throw std::invalid_argument("material_point_positions: one rest position per vertex expected");
   }
   const std::vector<Triangle> triangles = triangles_of(other.current);
-  if (triangles.empty()) throw std::invalid_argument("material_point_distance: no face to compare");
+  if (triangles.empty())
+    throw std::invalid_argument("material_point_positions: no face to locate on");
   std::vector<Eigen::AlignedBox3d> boxes;
   for (const Triangle& t : triangles) {
     Eigen::AlignedBox3d box(other.rest_m[t.a]);
@@ -53,9 +55,9 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
     here_m = l[0] * x[t.a] + l[1] * x[t.b] + l[2] * x[t.c];
     return (l[0] * X_k[t.a] + l[1] * X_k[t.b] + l[2] * X_k[t.c] - X).norm();
   };
-  ShapeDistance out;
-  for (std::size_t i = 0; i < reference.rest_m.size(); ++i) {
-    const Eigen::Vector3d& X = reference.rest_m[i];
+  std::vector<Eigen::Vector3d> positions(rest_points_m.size());
+  for (std::size_t i = 0; i < rest_points_m.size(); ++i) {
+    const Eigen::Vector3d& X = rest_points_m[i];
     // nearest triangle in rest space; a box farther than the best distance cannot hold a nearer one
     double best_m = std::numeric_limits<double>::infinity();
     Eigen::Vector3d here_m;
@@ -63,13 +65,32 @@ ShapeDistance material_point_distance(const MaterialSurface& other,
       if (boxes[k].exteriorDistance(X) < best_m) best_m = std::min(best_m, locate(k, X, here_m));
     }
     // of the triangles that nearest (both lips of a tear hold the points along it), the one whose
-    // point is nearest now
+    // point is nearest `near_m` now, or the first
     const double tied_m = best_m + rest_tie_m;
     double gap_m = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < triangles.size(); ++k) {
       if (boxes[k].exteriorDistance(X) > tied_m || locate(k, X, here_m) > tied_m) continue;
-      gap_m = std::min(gap_m, (here_m - reference.current.vertices[i]).norm());
+      const double here_gap_m = near_m != nullptr ? (here_m - (*near_m)[i]).norm() : 0.0;
+      if (here_gap_m < gap_m) {
+        gap_m = here_gap_m;
+        positions[i] = here_m;
+      }
+      if (near_m == nullptr) break;
     }
+  }
+  return positions;
+}
+
+ShapeDistance material_point_distance(const MaterialSurface& other,
+                                      const MaterialSurface& reference) {
+  if (reference.rest_m.size() != reference.current.vertices.size()) {
+    throw std::invalid_argument("material_point_distance: one rest position per vertex expected");
+  }
+  const std::vector<Eigen::Vector3d> positions =
+      material_point_positions(other, reference.rest_m, &reference.current.vertices);
+  ShapeDistance out;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const double gap_m = (positions[i] - reference.current.vertices[i]).norm();
     out.mean_m += gap_m;
     out.max_m = std::max(out.max_m, gap_m);
     ++out.points;

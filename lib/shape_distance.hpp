@@ -32,6 +32,14 @@ struct ShapeDistance {
 ShapeDistance material_point_distance(const MaterialSurface& other,
                                       const MaterialSurface& reference);
 
+/// The current position on `other` of each material point of `rest_points_m` (m), located as
+/// material_point_distance() locates them; where several triangles hold a point as nearly (both
+/// lips of a tear), the one whose point is nearest `near_m`'s (#rest_points, m) when given, else
+/// the first. Throws std::invalid_argument when `other` has no face or the sizes disagree.
+std::vector<Eigen::Vector3d> material_point_positions(
+    const MaterialSurface& other, const std::vector<Eigen::Vector3d>& rest_points_m,
+    const std::vector<Eigen::Vector3d>* near_m = nullptr);
+
 /// How far two surfaces are from each other as shapes, whichever material point lies where: the
 /// distance from each vertex of one to the nearest point of the other's faces, both ways (the
 /// symmetric Chamfer distance over vertices). `mean_m` is the mean of the two directions' means,

@@ -43,6 +43,20 @@ TEST(MaterialPointDistance, AnAffineShapeLooksTheSameAtEveryResolution) {
   EXPECT_LT(d.max_m, 1e-12);
 }
 
+TEST(MaterialPointPositions, AnyRestPointIsFoundWhereTheMeshCarriesIt) {
+  // an affine shape: every material point, a vertex or not, lands where the map puts it
+  const MaterialSurface coarse = sheet(4, GridCells::triangles, sheared_and_lifted);
+  const std::vector<Eigen::Vector3d> points = {
+      {0.0, 0.0, 0.0}, {0.37, 0.0, 0.21}, {1.0, 0.0, 0.5}, {0.5, 0.0, 0.499}};
+  const std::vector<Eigen::Vector3d> found = material_point_positions(coarse, points);
+  ASSERT_EQ(found.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_LT((found[i] - sheared_and_lifted(points[i])).norm(), 1e-12) << "point " << i;
+  }
+  const std::vector<Eigen::Vector3d> one_near = {Eigen::Vector3d::Zero()};
+  EXPECT_THROW(material_point_positions(coarse, points, &one_near), std::invalid_argument);
+}
+
 TEST(MaterialPointDistance, ATranslationIsMeasuredAtEveryPoint) {
   const MaterialSurface here = sheet(6, GridCells::triangles, sheared_and_lifted);
   const MaterialSurface moved =
