@@ -15,9 +15,9 @@
 
 namespace tissu {
 
-/// One particle near one obstacle, the obstacle's surface offset by its thickness linearised where
-/// the particle starts the step: the particle may not go below the plane through `point` with
-/// normal `normal`. Penalty energy 1/2 k max(0, (point - x) . normal)^2 (J).
+/// One particle near one obstacle, the obstacle's surface offset by its thickness linearised near
+/// the particle (find_contact_planes()): the particle may not go below the plane through `point`
+/// with normal `normal`. Penalty energy 1/2 k max(0, (point - x) . normal)^2 (J).
 struct ContactPlane {
   int particle = 0;
   int obstacle = 0;                                 ///< index in SolverParams::obstacles
@@ -30,10 +30,11 @@ struct ContactPlane {
 /// `end_time_s`: whose start x_n (3#P, m), carried by the obstacle's surface over the step
 /// (carry_with_surface()), is closer to it than its thickness plus how far the particle's first
 /// iterate x_0 = x_n + h v_n (3#P, m) moves (|x_0 - x_n|) plus the thickness again, so that a
-/// particle arriving during the step is caught. Each plane is the tangent plane of the offset
-/// surface at that carried start's nearest point. `stiffness` is beta (dimensionless): k = beta
-/// m / h^2, so that a particle resting on a plane under gravity sinks g h^2 / beta into it. In
-/// particle order, then obstacle order.
+/// particle arriving during the step is caught (x_0 may also be that close). Each plane is the
+/// tangent plane of the offset surface at x_0's nearest point, or at the carried start's when x_0
+/// has gone past the obstacle's middle (their normals point away from each other). `stiffness` is
+/// beta (dimensionless): k = beta m / h^2, so that a particle resting on a plane under gravity
+/// sinks g h^2 / beta into it. In particle order, then obstacle order.
 void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                          double stiffness, double time_step_s, double end_time_s,
                          const Eigen::VectorXd& start_x, const Eigen::VectorXd& first_iterate,
