@@ -31,28 +31,34 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
     const double travel_m = (x0 - start).norm();
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       const Obstacle& obstacle = obstacles[k];
-      // linearised at x_0, where the step's solution is first looked for, unless x_0 has gone
-      // past the obstacle's middle (its nearest point then on the far side): then where the
-      // step starts (outside: the last step's contacts put it there), moved with the
-      // obstacle's surface to the step's end
+      // linearised at x_0, where the step's solution is first looked for, unless that plane
+      // would put the step's start deeper than the thickness below it (x_0 has gone round a
+      // curved obstacle, or past its middle: the penalty would then push the particle where it
+      // never was; a particle sliding on a ball starts a little below the tangent plane ahead of
+      // it, by (R + t)(1 - cos) of the angle it slides): then where the step starts (outside:
+      // the last step's contacts put it there), moved with the obstacle's surface to the step's end
       const Eigen::Vector3d from = obstacle.motion.moves() || obstacle.animation
                                        ? carry_with_surface(obstacle, before[k], after[k], start)
                                        : start;
       const SurfaceDistance at_start = surface_distance(obstacle, after[k], from);
       const SurfaceDistance at_x0 = surface_distance(obstacle, after[k], x0);
-      const bool same_side = at_x0.normal.dot(at_start.normal) > 0.0;
-      const SurfaceDistance& surface = same_side ? at_x0 : at_start;
-      const Eigen::Vector3d& at = same_side ? x0 : from;
       if (!(std::min(at_start.distance_m, at_x0.distance_m) <
             2.0 * obstacle.thickness_m + travel_m)) {
         continue;
       }
+      const Eigen::Vector3d x0_point =
+          x0 + (obstacle.thickness_m - at_x0.distance_m) * at_x0.normal;
+      const bool start_outside = (x0_point - from).dot(at_x0.normal) <= obstacle.thickness_m;
+      const SurfaceDistance& surface = start_outside ? at_x0 : at_start;
       ContactPlane& plane = slots[p * per_particle + k];
       filled[p * per_particle + k] = 1;
       plane.particle = p;
       plane.obstacle = static_cast<int>(k);
       plane.normal = surface.normal;
-      plane.point = at + (obstacle.thickness_m - surface.distance_m) * surface.normal;
+      plane.point = start_outside
+                        ? x0_point
+                        : Eigen::Vector3d(from + (obstacle.thickness_m - at_start.distance_m) *
+                                                     at_start.normal);
       plane.stiffness_n_per_m = per_kg * model.mass[p];
     }
   }

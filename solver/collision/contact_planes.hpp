@@ -31,8 +31,9 @@ struct ContactPlane {
 /// (carry_with_surface()), is closer to it than its thickness plus how far the particle's first
 /// iterate x_0 = x_n + h v_n (3#P, m) moves (|x_0 - x_n|) plus the thickness again, so that a
 /// particle arriving during the step is caught (x_0 may also be that close). Each plane is the
-/// tangent plane of the offset surface at x_0's nearest point, or at the carried start's when x_0
-/// has gone past the obstacle's middle (their normals point away from each other). `stiffness` is
+/// tangent plane of the offset surface at x_0's nearest point, or at the carried start's when
+/// the first would put the carried start more than the thickness below it (x_0 gone round a
+/// curved obstacle or past its middle). `stiffness` is
 /// beta (dimensionless): k = beta m / h^2, so that a particle resting on a plane under gravity
 /// sinks g h^2 / beta into it. In particle order, then obstacle order.
 void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,

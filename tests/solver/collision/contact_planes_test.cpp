@@ -70,6 +70,39 @@ TEST(ContactPlanes, OnlyFreeParticlesWithinReachOfAnObstacleGetAPlane) {
   EXPECT_EQ(planes[0].particle, 1);
 }
 
+TEST(ContactPlanes, APlaneNeverPutsTheStepsStartDeeperThanTheThicknessBelowIt) {
+  // On a ball of radius 0.5 m (thickness 5 mm) two particles start on its top. The first is
+  // predicted 2 degrees further round: it is held by the tangent plane there, which its start is
+  // a little below ((R + t)(1 - cos 2 deg) = 0.3 mm). The second, a torn lip flung round the ball,
+  // is predicted 60 degrees round: the tangent plane there would put its start 25 cm deep and
+  // fling it, so it is held by the plane at its start.
+  SpringModel model;
+  model.mass = Eigen::VectorXd::Constant(2, 0.01);
+  model.pinned.assign(2, 0);
+  model.springs.resize(0, 2);
+  finalize_model(model);
+  Obstacle ball;
+  ball.shape = ObstacleShape::sphere;
+  ball.radius_m = 0.5;
+  ball.thickness_m = 0.005;
+  const double r = ball.radius_m + ball.thickness_m;
+  const auto round = [&](double degrees) {
+    const double a = degrees * M_PI / 180.0;
+    return Eigen::Vector3d(r * std::sin(a), 0.0, r * std::cos(a));
+  };
+  Eigen::VectorXd start(6), first(6);
+  start << round(0.0), round(0.0);
+  first << round(2.0), round(60.0);
+  std::vector<ContactPlane> planes;
+  find_contact_planes(model, {ball}, penalty, h, h, start, first, planes);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_LT((planes[0].normal - round(2.0) / r).norm(), 1e-12);
+  EXPECT_NEAR(contact_depth_m(planes[0], round(0.0)), r * (1.0 - std::cos(2.0 * M_PI / 180.0)),
+              1e-12);
+  EXPECT_LT((planes[1].normal - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
+  EXPECT_EQ(contact_depth_m(planes[1], round(0.0)), 0.0);
+}
+
 TEST(ContactPlanes, APenaltysGradientIsItsEnergysDerivative) {
   std::vector<ContactPlane> planes(3);
   planes[0] = {0, 0, {0.0, 0.0, 0.01}, Eigen::Vector3d(0.0, 0.6, 0.8), 300.0};
