@@ -397,6 +397,7 @@ TISSU_DEMO(tearing_ball, implicit_euler_x100, small_step_settings);
 TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 10);
 TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 20);
 TISSU_DEMO_STEPS(tearing_ball, implicit_euler, 30);
+TISSU_DEMO_PENALTY(tearing_ball, quasi_newton, 10);
 
 }  // namespace
 }  // namespace tissu

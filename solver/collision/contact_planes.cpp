@@ -31,34 +31,26 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
     const double travel_m = (x0 - start).norm();
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       const Obstacle& obstacle = obstacles[k];
-      // linearised at x_0, where the step's solution is first looked for, unless that plane
-      // would put the step's start deeper than the thickness below it (x_0 has gone round a
-      // curved obstacle, or past its middle: the penalty would then push the particle where it
-      // never was; a particle sliding on a ball starts a little below the tangent plane ahead of
-      // it, by (R + t)(1 - cos) of the angle it slides): then where the step starts (outside:
-      // the last step's contacts put it there), moved with the obstacle's surface to the step's end
+      // linearised at x_0, where the step's solution is first looked for; but no plane where it
+      // would put the step's start (outside: the last step's contacts put it there; moved with
+      // the obstacle's surface to the step's end) more than the thickness below it: x_0 has gone
+      // round a curved obstacle or past its middle, no plane holds the particle's whole path, and
+      // the plane would throw it where it never was. The projection after the step keeps it out,
+      // as it does without the penalty. (A particle sliding on a ball starts a little below the
+      // tangent plane ahead of it, by (R + t)(1 - cos) of the angle it slides.)
       const Eigen::Vector3d from = obstacle.motion.moves() || obstacle.animation
                                        ? carry_with_surface(obstacle, before[k], after[k], start)
                                        : start;
-      const SurfaceDistance at_start = surface_distance(obstacle, after[k], from);
       const SurfaceDistance at_x0 = surface_distance(obstacle, after[k], x0);
-      if (!(std::min(at_start.distance_m, at_x0.distance_m) <
-            2.0 * obstacle.thickness_m + travel_m)) {
-        continue;
-      }
-      const Eigen::Vector3d x0_point =
-          x0 + (obstacle.thickness_m - at_x0.distance_m) * at_x0.normal;
-      const bool start_outside = (x0_point - from).dot(at_x0.normal) <= obstacle.thickness_m;
-      const SurfaceDistance& surface = start_outside ? at_x0 : at_start;
+      if (!(at_x0.distance_m < 2.0 * obstacle.thickness_m + travel_m)) continue;
+      const Eigen::Vector3d point = x0 + (obstacle.thickness_m - at_x0.distance_m) * at_x0.normal;
+      if (!((point - from).dot(at_x0.normal) <= obstacle.thickness_m)) continue;
       ContactPlane& plane = slots[p * per_particle + k];
       filled[p * per_particle + k] = 1;
       plane.particle = p;
       plane.obstacle = static_cast<int>(k);
-      plane.normal = surface.normal;
-      plane.point = start_outside
-                        ? x0_point
-                        : Eigen::Vector3d(from + (obstacle.thickness_m - at_start.distance_m) *
-                                                     at_start.normal);
+      plane.normal = at_x0.normal;
+      plane.point = point;
       plane.stiffness_n_per_m = per_kg * model.mass[p];
     }
   }

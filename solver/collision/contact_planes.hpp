@@ -27,15 +27,15 @@ struct ContactPlane {
 };
 
 /// The planes of the free particles within reach of an obstacle where it is at the step's end
-/// `end_time_s`: whose start x_n (3#P, m), carried by the obstacle's surface over the step
-/// (carry_with_surface()), is closer to it than its thickness plus how far the particle's first
-/// iterate x_0 = x_n + h v_n (3#P, m) moves (|x_0 - x_n|) plus the thickness again, so that a
-/// particle arriving during the step is caught (x_0 may also be that close). Each plane is the
-/// tangent plane of the offset surface at x_0's nearest point, or at the carried start's when
-/// the first would put the carried start more than the thickness below it (x_0 gone round a
-/// curved obstacle or past its middle). `stiffness` is
-/// beta (dimensionless): k = beta m / h^2, so that a particle resting on a plane under gravity
-/// sinks g h^2 / beta into it. In particle order, then obstacle order.
+/// `end_time_s`: whose first iterate x_0 = x_n + h v_n (3#P, m) is closer to it than its thickness
+/// plus how far the particle moves in the step (|x_0 - x_n|, from its start x_n, 3#P, m) plus the
+/// thickness again, so that a particle arriving during the step is caught. Each plane is the
+/// tangent plane of the offset surface at x_0's nearest point; none where that plane would put
+/// the start (carried by the obstacle's surface over the step, carry_with_surface()) more than the
+/// thickness below it (x_0 gone round a curved obstacle or past its middle: no plane holds the
+/// path, and the projection after the step keeps the particle out). `stiffness` is beta
+/// (dimensionless): k = beta m / h^2, so that a particle resting on a plane under gravity sinks
+/// g h^2 / beta into it. In particle order, then obstacle order.
 void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                          double stiffness, double time_step_s, double end_time_s,
                          const Eigen::VectorXd& start_x, const Eigen::VectorXd& first_iterate,
