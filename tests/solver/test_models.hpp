@@ -6,25 +6,43 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
+#include "solver/collision/obstacle.hpp"
 #include "solver/spring_model.hpp"
 #include "solver/step.hpp"
 #include "tests/test_thread_count.hpp"
 
 namespace tissu::test {
 
-/// One free particle of 10 g at `x`, moving at `v`.
-inline SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d& v, State& state) {
+/// `count` free particles of 10 g each, with no spring between them.
+inline SpringModel free_particles(int count) {
   SpringModel model;
-  model.mass = Eigen::VectorXd::Constant(1, 0.01);
-  model.pinned.assign(1, 0);
+  model.mass = Eigen::VectorXd::Constant(count, 0.01);
+  model.pinned.assign(count, 0);
   model.springs.resize(0, 2);
   finalize_model(model);
+  return model;
+}
+
+/// One free particle of 10 g at `x`, moving at `v`.
+inline SpringModel lone_particle(const Eigen::Vector3d& x, const Eigen::Vector3d& v, State& state) {
+  SpringModel model = free_particles(1);
   state.x = x;
   state.v = v;
   return model;
+}
+
+/// A plane through the origin tilted by `slope_rad` about x, rising towards +y, with friction
+/// coefficients mu_s and mu_k.
+inline Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
+  Obstacle plane;
+  plane.normal = Eigen::Vector3d(0.0, -std::sin(slope_rad), std::cos(slope_rad));
+  plane.static_friction = mu_static;
+  plane.kinetic_friction = mu_kinetic;
+  return plane;
 }
 
 /// A mass of `mass_kg` on one spring of stiffness `stiffness_n_per_m` and rest length

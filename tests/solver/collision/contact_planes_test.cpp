@@ -17,15 +17,6 @@ constexpr double g = 9.81;         // m/s^2
 constexpr double h = 1.0 / 30.0;   // s: one step per frame
 constexpr double penalty = 100.0;  // beta
 
-/// A plane through the origin tilted by `slope_rad` about x, rising towards +y.
-Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
-  Obstacle plane;
-  plane.normal = Eigen::Vector3d(0.0, -std::sin(slope_rad), std::cos(slope_rad));
-  plane.static_friction = mu_static;
-  plane.kinetic_friction = mu_kinetic;
-  return plane;
-}
-
 SolverParams minimiser_params(Integrator integrator, const Obstacle& obstacle) {
   SolverParams params;
   params.integrator = integrator;
@@ -39,11 +30,7 @@ SolverParams minimiser_params(Integrator integrator, const Obstacle& obstacle) {
 TEST(ContactPlanes, OnlyFreeParticlesWithinReachOfAnObstacleGetAPlane) {
   // four particles above a floor of thickness 5 mm: touching, 8 mm up, 2 cm up but falling 2 cm
   // in the step, 2 cm up and still; the first pinned in a second model
-  SpringModel model;
-  model.mass = Eigen::VectorXd::Constant(4, 0.01);
-  model.pinned.assign(4, 0);
-  model.springs.resize(0, 2);
-  finalize_model(model);
+  SpringModel model = test::free_particles(4);
   Eigen::VectorXd start(12), first(12);
   start << 0, 0, 0.005, 1, 0, 0.008, 2, 0, 0.02, 3, 0, 0.02;
   first = start;
@@ -77,11 +64,7 @@ TEST(ContactPlanes, APlaneNeverPutsTheStepsStartDeeperThanTheThicknessBelowIt) {
   // is predicted 60 degrees round: the tangent plane there would put its start 25 cm deep and
   // throw it, and no plane holds its path round the ball: it gets none (the projection after the
   // step keeps it out).
-  SpringModel model;
-  model.mass = Eigen::VectorXd::Constant(2, 0.01);
-  model.pinned.assign(2, 0);
-  model.springs.resize(0, 2);
-  finalize_model(model);
+  SpringModel model = test::free_particles(2);
   Obstacle ball;
   ball.shape = ObstacleShape::sphere;
   ball.radius_m = 0.5;
@@ -154,7 +137,7 @@ TEST_P(Minimisers, StaticFrictionHoldsAParticleOnASlopeAtOneStepPerFrame) {
   // the projection after it removes only the penalty's depth, 1/(1 + beta) of the normal impulse:
   // friction must be bounded by the penalty's impulse too, or the particle slides (as the drape
   // slid off its ball before the impulse was passed on).
-  const Obstacle plane = slope(20.0 * M_PI / 180.0, 0.5, 0.4);
+  const Obstacle plane = test::slope(20.0 * M_PI / 180.0, 0.5, 0.4);
   const Eigen::Vector3d start = plane.thickness_m * plane.normal;
   State state;
   const SpringModel model = test::lone_particle(start, Eigen::Vector3d::Zero(), state);
@@ -170,7 +153,7 @@ TEST_P(Minimisers, KineticFrictionSlowsASlidingParticleAsCoulombSaysAtOneStepPer
   // down a 30-degree slope with mu_k = 0.3: a = g (sin 30 - 0.3 cos 30) = 2.36 m/s^2 along it,
   // to the penalty's 1/(1 + beta) of the normal force
   const double angle_rad = 30.0 * M_PI / 180.0;
-  const Obstacle plane = slope(angle_rad, 0.3, 0.3);
+  const Obstacle plane = test::slope(angle_rad, 0.3, 0.3);
   const Eigen::Vector3d down_slope(0.0, -std::cos(angle_rad), -std::sin(angle_rad));
   State state;
   const SpringModel model =

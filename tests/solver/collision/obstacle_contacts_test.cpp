@@ -14,15 +14,6 @@ namespace {
 
 constexpr double g = 9.81;  // m/s^2
 
-/// A plane through the origin tilted by `slope_rad` about x, rising towards +y.
-Obstacle slope(double slope_rad, double mu_static, double mu_kinetic) {
-  Obstacle plane;
-  plane.normal = Eigen::Vector3d(0.0, -std::sin(slope_rad), std::cos(slope_rad));
-  plane.static_friction = mu_static;
-  plane.kinetic_friction = mu_kinetic;
-  return plane;
-}
-
 SolverParams params_with(Integrator integrator, const Obstacle& obstacle) {
   SolverParams params;
   params.integrator = integrator;
@@ -73,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, EveryIntegrator,
 
 TEST(ObstacleFriction, StaticFrictionHoldsAParticleOnASlope) {
   // tan 20 deg = 0.36 < mu_s = 0.5: it never starts sliding
-  const Obstacle plane = slope(20.0 * M_PI / 180.0, 0.5, 0.4);
+  const Obstacle plane = test::slope(20.0 * M_PI / 180.0, 0.5, 0.4);
   State state;
   const Eigen::Vector3d start = plane.thickness_m * plane.normal;
   const SpringModel model = test::lone_particle(start, Eigen::Vector3d::Zero(), state);
@@ -86,7 +77,7 @@ TEST(ObstacleFriction, StaticFrictionHoldsAParticleOnASlope) {
 TEST(ObstacleFriction, KineticFrictionSlowsASlidingParticleAsCoulombSays) {
   // down a 30-degree slope with mu_k = 0.3: a = g (sin 30 - 0.3 cos 30) = 2.36 m/s^2 along it
   const double angle_rad = 30.0 * M_PI / 180.0;
-  const Obstacle plane = slope(angle_rad, 0.3, 0.3);
+  const Obstacle plane = test::slope(angle_rad, 0.3, 0.3);
   const Eigen::Vector3d down_slope(0.0, -std::cos(angle_rad), -std::sin(angle_rad));
   State state;
   const Eigen::Vector3d start = plane.thickness_m * plane.normal;
@@ -101,7 +92,7 @@ TEST(ObstacleFriction, KineticFrictionSlowsASlidingParticleAsCoulombSays) {
   EXPECT_NEAR((state.x - start).dot(plane.normal), 0.0, 1e-12);  // on the slope throughout
 
   // a particle thrown up-flat on a level floor stops after v^2 / (2 mu_k g)
-  const Obstacle floor = slope(0.0, 0.3, 0.3);
+  const Obstacle floor = test::slope(0.0, 0.3, 0.3);
   const Eigen::Vector3d on_floor_start = floor.thickness_m * floor.normal;  // touching, not in it
   const SpringModel thrown =
       test::lone_particle(on_floor_start, Eigen::Vector3d(2.0, 0.0, 0.0), state);
