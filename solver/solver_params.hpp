@@ -142,7 +142,7 @@ struct SolverParams {
   ProjectiveDynamicsOptions pd;
   NewtonOptions newton;
   QuasiNewtonOptions quasi_newton;
-  std::vector<Obstacle> obstacles;      ///< kept out of after every step, whatever the integrator
+  std::vector<Obstacle> obstacles;  ///< kept out of after every step, whatever the integrator
   /// beta (dimensionless, >= 0): Newton and quasi-Newton also hold the obstacles inside the step,
   /// by a penalty of stiffness beta m / h^2 per particle (contact_planes.hpp; a particle resting
   /// on a floor sinks g h^2 / beta into its thickness during the step, and is projected out after

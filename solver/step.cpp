@@ -140,11 +140,12 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
   if (finite) {  // a NaN would leave the hash cells of self-collision undefined
     // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
     const double end_time_s = state.time + params.time_step;
-    workspace.obstacle_penalty_impulse.resize(0, 0);
     const std::vector<ContactPlane>* held = minimised_contacts(params, workspace);
-    if (held != nullptr && !held->empty()) {
+    if (held != nullptr && !held->empty()) {  // reuses the buffer: no allocation per step
       contact_normal_impulses(model, *held, static_cast<int>(params.obstacles.size()),
                               params.time_step, state.x, workspace.obstacle_penalty_impulse);
+    } else {
+      workspace.obstacle_penalty_impulse.resize(0, 0);
     }
     workspace.obstacle_contacts = resolve_obstacle_contacts(
         model, params.obstacles, params.time_step, end_time_s, workspace.step_start_x, state,
