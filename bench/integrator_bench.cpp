@@ -398,6 +398,16 @@ TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 10);
 TISSU_DEMO_STEPS(tearing_ball, quasi_newton, 20);
 TISSU_DEMO_STEPS(tearing_ball, implicit_euler, 30);
 TISSU_DEMO_PENALTY(tearing_ball, quasi_newton, 10);
+TISSU_DEMO(skirt_walk, implicit_euler_x100, small_step_settings);
+TISSU_DEMO_STEPS(skirt_walk, quasi_newton, 2);
+TISSU_DEMO_PENALTY(skirt_walk, quasi_newton, 1);
+TISSU_DEMO_PENALTY(skirt_walk, quasi_newton, 2);
+TISSU_DEMO_PENALTY(skirt_walk, quasi_newton, 4);
+TISSU_DEMO(tshirt_arms, implicit_euler_x100, small_step_settings);
+TISSU_DEMO_STEPS(tshirt_arms, quasi_newton, 8);
+TISSU_DEMO_PENALTY(tshirt_arms, quasi_newton, 2);
+TISSU_DEMO_PENALTY(tshirt_arms, quasi_newton, 4);
+TISSU_DEMO_PENALTY(tshirt_arms, quasi_newton, 8);
 
 }  // namespace
 }  // namespace tissu

@@ -104,9 +104,9 @@ ShirtOnBody shirt_on_body(std::vector<std::string> overrides) {
 }
 
 TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
-  // one frame per step (the demo's time step, 1/240 s), so every step of the 5 s is checked
+  // one frame per step (the demo's time step, 1/120 s), so every step of the 5 s is checked
   const ShirtOnBody run = shirt_on_body(
-      {"simulation.frame_rate=240", "simulation.substeps=1", "simulation.frames=1200"});
+      {"simulation.frame_rate=120", "simulation.substeps=1", "simulation.frames=600"});
   EXPECT_GE(run.deepest_m, 0.0);            // signed distance >= -thickness after every step
   EXPECT_LT(run.overstretched_edges, 200);  // as in the demo (below)
   EXPECT_GT(run.arm_contacts, 10000)
@@ -114,14 +114,15 @@ TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyAfterEveryStep) {
 }
 
 TEST(MovingBody, TheShirtStaysOutsideTheAnimatedBodyInTheDemo) {
-  // the demo as shipped (30 frames/s, 8 steps each), every frame: the same physics as above, but
+  // the demo as shipped (30 frames/s, 4 steps each), every frame: the same physics as above, but
   // a different round-off history, and in this one self-collision pushed sleeve cloth up to 4 cm
   // into the rising arms until obstacles had the last word over it
   const ShirtOnBody run = shirt_on_body({});
   EXPECT_GE(run.deepest_m, 0.0);
-  // the sleeves are not torn into spikes around the arms (84 measured; 996, some 11 times their
-  // rest length, while an impact zone that an arm held stayed where it started as the arm moved)
-  EXPECT_LT(run.overstretched_edges, 200);
+  // the sleeves are not torn into spikes around the arms (10 measured with the body held inside
+  // each step; 84 at 8 steps per frame without it; 996, some 11 times their rest length, while an
+  // impact zone that an arm held stayed where it started as the arm moved)
+  EXPECT_LT(run.overstretched_edges, 50);
   EXPECT_GT(run.arm_contacts, 1000)
       << "the arms never carried the sleeves: the scene tests nothing";
 }
