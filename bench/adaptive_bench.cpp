@@ -195,16 +195,25 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
     state.SetIterationTime(run.wall_s);
   }
   if (mesh == Mesh::uniform_fine) fine_runs()[scene] = run;
-  double mean_particles = 0.0;
+  double mean_particles = 0.0, step_ms = 0.0, particle_steps = 0.0;
   int max_particles = 0;
+  long iterations = 0;
   for (const FrameStats& row : run.frames) {
     mean_particles += static_cast<double>(row.particles) / run.frames.size();
     max_particles = std::max(max_particles, row.particles);
+    iterations += row.solver_iterations;
+    step_ms += row.step_ms;
+    particle_steps += static_cast<double>(row.particles);
   }
+  const double stepped_frames = static_cast<double>(run.frames.size() - 1);
   const bench::ShapeGap gap = bench::shape_gap(run, fine_run(scene));
   state.counters["wall_s_per_sim_s"] = run.wall_s / run.simulated_s;
   state.counters["mean_particles"] = mean_particles;
   state.counters["max_particles"] = max_particles;
+  // the integrator's iterations per frame, and the steps' wall time per particle and frame: what
+  // a particle costs on this mesh (issue 19's "cost per particle")
+  state.counters["solver_iterations_per_frame"] = static_cast<double>(iterations) / stepped_frames;
+  state.counters["step_us_per_particle_frame"] = 1e3 * step_ms / particle_steps;
   state.counters["mean_gap_pct"] = gap.mean_pct;
   state.counters["max_gap_pct"] = gap.max_pct;
   state.counters["surface_gap_mean_pct"] = gap.surface_mean_pct;

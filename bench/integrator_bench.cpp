@@ -74,26 +74,11 @@ CompiledCloth hanging_sheet(int particles_per_side) {
   return compile(lcc);
 }
 
-int iterations_of(const SolverParams& params, const StepWorkspace& workspace) {
-  switch (params.integrator) {
-    case Integrator::implicit_euler:
-      return workspace.implicit.cg_iterations;
-    case Integrator::projective_dynamics:
-      return workspace.pd.iterations;
-    case Integrator::newton:
-      return workspace.newton.iterations;
-    case Integrator::quasi_newton:
-      return workspace.quasi_newton.iterations;
-    default:
-      return 0;
-  }
-}
-
 /// Preconditioner solves in the last step (a solve with the PD matrix, or a multigrid V-cycle):
 /// Newton's conjugate-gradient iterations, quasi-Newton's and PD's iterations.
 int preconditioner_solves_of(const SolverParams& params, const StepWorkspace& workspace) {
   return params.integrator == Integrator::newton ? workspace.newton.cg_iterations
-                                                 : iterations_of(params, workspace);
+                                                 : last_step_iterations(params, workspace);
 }
 
 SolverParams sheet_params(const Method& method, int steps_per_frame) {
@@ -130,7 +115,7 @@ SheetRun run_sheet(const CompiledCloth& cloth, const SolverParams& params, int s
       const StepStatus status = step(cloth.model, params, run.last, workspace);
       run.finite = status != StepStatus::non_finite;
       run.unconverged += status == StepStatus::not_converged;
-      run.iterations += iterations_of(params, workspace);
+      run.iterations += last_step_iterations(params, workspace);
       run.preconditioner_solves += preconditioner_solves_of(params, workspace);
     }
     if (record) run.frames.push_back(run.last.x);

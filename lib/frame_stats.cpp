@@ -41,7 +41,8 @@ std::vector<StatsColumn> stats_columns(const FrameStats& r) {
           {"pieces", double(r.pieces)},
           {"boundary_edges", double(r.boundary_edges)},
           {"pin_force", r.pin_force},
-          {"max_stretch", r.max_stretch}};
+          {"max_stretch", r.max_stretch},
+          {"solver_iterations", double(r.solver_iterations)}};
 }
 
 StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics") {

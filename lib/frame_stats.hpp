@@ -38,6 +38,9 @@ struct FrameStats {
   /// the largest engineering strain l / l0 - 1 of a structural spring (dimensionless; -1 when
   /// there is none)
   double max_stretch = 0.0;
+  /// the integrator's iterations over the frame's steps (solver/step.hpp last_step_iterations():
+  /// CG, PD, Newton or L-BFGS iterations; 0 for the explicit integrators)
+  int solver_iterations = 0;
 };
 
 /// A column of stats.csv and its value in a row (integers exactly, as doubles).

@@ -45,10 +45,12 @@ struct FrameSteps {
   double collision_ms = 0.0;
   int tears = 0;
   int tip_splits = 0;    ///< edges bisected around crack tips
+  int iterations = 0;    ///< the integrator's, over the steps
   bool stopped = false;  ///< a stop was requested before all the frame's steps were made
 
-  void add(StepStatus status, const StepWorkspace& workspace) {
+  void add(StepStatus status, const SolverParams& params, const StepWorkspace& workspace) {
     if (status == StepStatus::not_converged) ++unconverged;
+    iterations += last_step_iterations(params, workspace);
     obstacle_contacts = workspace.obstacle_contacts;
     self_contacts += workspace.self_collision.proximities + workspace.self_collision.impacts;
     collision_ms += workspace.self_collision.wall_ms;
@@ -80,6 +82,7 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.boundary_edges = count_boundary_edges(lcc);
   s.pin_force = pin_reaction_force(m, environment, cloth.state).norm();
   s.max_stretch = max_spring_strain(m, cloth.state.x, SpringKind::structural);
+  s.solver_iterations = steps.iterations;
   return s;
 }
 
@@ -177,7 +180,7 @@ std::optional<Divergence> step_frame_of(const Scenario& scenario, ClothComplex& 
     handles.before_step(lcc, cloth, scenario.solver.time_step);
     before_step = cloth.state;
     const StepStatus status = step(cloth.model, scenario.solver, cloth.state, workspace);
-    steps.add(status, workspace);
+    steps.add(status, scenario.solver, workspace);
     if (auto cause = divergence_cause(status, cloth, limit)) {
       const double time_s = cloth.state.time;
       cloth.state = before_step;

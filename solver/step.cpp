@@ -168,4 +168,21 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
   return status;
 }
 
+int last_step_iterations(const SolverParams& params, const StepWorkspace& workspace) {
+  switch (params.integrator) {
+    case Integrator::implicit_euler:
+      return workspace.implicit.cg_iterations;
+    case Integrator::projective_dynamics:
+      return workspace.pd.iterations;
+    case Integrator::newton:
+      return workspace.newton.iterations;
+    case Integrator::quasi_newton:
+      return workspace.quasi_newton.iterations;
+    case Integrator::symplectic_euler:
+    case Integrator::position_verlet:
+      return 0;
+  }
+  return 0;
+}
+
 }  // namespace tissu

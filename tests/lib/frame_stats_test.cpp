@@ -47,7 +47,7 @@ TEST(StatsCsv, WritesAHeaderThenOneWholeRowPerFrame) {
   const std::vector<std::string> lines = lines_of(file);  // read while the writer is alive
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_THAT(lines[0], ::testing::StartsWith("frame,time,particles,"));
-  for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 20);
+  for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 21);
   EXPECT_THAT(lines[3], ::testing::StartsWith("2,0.0666"));
 }
 
@@ -79,7 +79,7 @@ TEST(StatsCsv, ARowTheDiskRefusesIsNotLeftHalfWritten) {
   }
   const std::vector<std::string> lines = lines_of(file);
   EXPECT_EQ(lines.size(), 1u + written);
-  EXPECT_EQ(std::count(lines.back().begin(), lines.back().end(), ','), 20);
+  EXPECT_EQ(std::count(lines.back().begin(), lines.back().end(), ','), 21);
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
