@@ -60,6 +60,7 @@ TEST(SolverIterations, ProjectiveDynamicsCountsItsLocalGlobalIterations) {
   // no tolerance: exactly `iterations` per step
   const std::vector<int> iterations =
       iterations_per_frame("projective_dynamics", 2, R"(, "pd": { "iterations": 7 })");
+  ASSERT_EQ(iterations.size(), 6u);
   for (int count : iterations) EXPECT_EQ(count, 14);
 }
 
@@ -72,7 +73,9 @@ TEST(SolverIterations, ATighterToleranceTakesMoreIterations) {
 }
 
 TEST(SolverIterations, ExplicitIntegratorsHaveNone) {
-  for (int count : iterations_per_frame("symplectic_euler", 50)) EXPECT_EQ(count, 0);
+  const std::vector<int> iterations = iterations_per_frame("symplectic_euler", 50);
+  ASSERT_EQ(iterations.size(), 6u);
+  for (int count : iterations) EXPECT_EQ(count, 0);
 }
 
 }  // namespace
