@@ -39,7 +39,6 @@
 #include <cstdlib>
 #include <functional>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -159,15 +158,6 @@ void one_level_finer(Scenario& scenario) {
   }
 }
 
-/// The overrides of TISSU_ADAPTIVE_SET, for the adaptive runs.
-std::vector<std::string> adaptive_overrides() {
-  std::vector<std::string> overrides;
-  const char* text = std::getenv("TISSU_ADAPTIVE_SET");
-  std::istringstream words(text ? text : "");
-  for (std::string word; words >> word;) overrides.push_back(word);
-  return overrides;
-}
-
 void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh) {
   const Scene& files = scenes().at(scene);
   const bool reference_or_floor =
@@ -180,7 +170,9 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   std::vector<std::string> overrides = run_overrides(file, step_factor);
   std::function<void(Scenario&)> edit;
   if (mesh == Mesh::adaptive) {  // after the steps: TISSU_ADAPTIVE_SET has the last word
-    for (std::string& word : adaptive_overrides()) overrides.push_back(std::move(word));
+    for (std::string& word : bench::environment_words("TISSU_ADAPTIVE_SET")) {
+      overrides.push_back(std::move(word));
+    }
   }
   if (mesh == Mesh::uniform_mid || mesh == Mesh::uniform_coarse) {
     overrides.push_back("adaptive.enabled=false");
@@ -195,16 +187,16 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
     state.SetIterationTime(run.wall_s);
   }
   if (mesh == Mesh::uniform_fine) fine_runs()[scene] = run;
-  double mean_particles = 0.0, step_ms = 0.0, particle_steps = 0.0;
+  double particles_summed = 0.0, step_ms = 0.0;  // over the frames
   int max_particles = 0;
   long iterations = 0;
   for (const FrameStats& row : run.frames) {
-    mean_particles += static_cast<double>(row.particles) / run.frames.size();
+    particles_summed += static_cast<double>(row.particles);
     max_particles = std::max(max_particles, row.particles);
     iterations += row.solver_iterations;
     step_ms += row.step_ms;
-    particle_steps += static_cast<double>(row.particles);
   }
+  const double mean_particles = particles_summed / static_cast<double>(run.frames.size());
   const double stepped_frames = static_cast<double>(run.frames.size() - 1);
   const bench::ShapeGap gap = bench::shape_gap(run, fine_run(scene));
   state.counters["wall_s_per_sim_s"] = run.wall_s / run.simulated_s;
@@ -213,7 +205,7 @@ void BM_Adaptivity(benchmark::State& state, const std::string& scene, Mesh mesh)
   // the integrator's iterations per frame, and the steps' wall time per particle and frame: what
   // a particle costs on this mesh (issue 19's "cost per particle")
   state.counters["solver_iterations_per_frame"] = static_cast<double>(iterations) / stepped_frames;
-  state.counters["step_us_per_particle_frame"] = 1e3 * step_ms / particle_steps;
+  state.counters["step_us_per_particle_frame"] = 1e3 * step_ms / particles_summed;
   state.counters["mean_gap_pct"] = gap.mean_pct;
   state.counters["max_gap_pct"] = gap.max_pct;
   state.counters["surface_gap_mean_pct"] = gap.surface_mean_pct;

@@ -31,7 +31,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <map>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -275,13 +274,7 @@ const std::vector<std::string>& converged_settings_of(const std::string& scenari
   // TISSU_DEMO_REFERENCE="key=value ...": another reference for every demo, e.g. the penalty at
   // 100 quasi-Newton steps per frame (implicit Euler's projection after each step is not
   // converged on the tearing ball at 100 steps, docs/benchmarks.md)
-  static const std::vector<std::string> chosen = [] {
-    std::vector<std::string> words;
-    std::istringstream text(
-        std::getenv("TISSU_DEMO_REFERENCE") ? std::getenv("TISSU_DEMO_REFERENCE") : "");
-    for (std::string word; text >> word;) words.push_back(word);
-    return words;
-  }();
+  static const std::vector<std::string> chosen = bench::environment_words("TISSU_DEMO_REFERENCE");
   if (!chosen.empty()) return chosen;
   const Scenario scenario = load_scenario(TISSU_DATA_DIR "/scenarios/" + scenario_file, {});
   const bool after_step = scenario.tearing.enabled || !scenario.solver.obstacles.empty();

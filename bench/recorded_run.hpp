@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -46,6 +48,16 @@ inline const std::filesystem::path& run_directory() {
   };
   static const Directory directory;
   return directory.path;
+}
+
+/// The words of the environment variable `name` (none when it is unset), e.g. `--set` overrides
+/// separated by spaces: TISSU_ADAPTIVE_SET, TISSU_DEMO_REFERENCE.
+inline std::vector<std::string> environment_words(const char* name) {
+  const char* text = std::getenv(name);
+  std::istringstream words(text ? text : "");
+  std::vector<std::string> found;
+  for (std::string word; words >> word;) found.push_back(word);
+  return found;
 }
 
 /// Runs data/scenarios/<scenario_file> with `overrides`, then `edit` when given, without images or
