@@ -13,13 +13,13 @@ namespace {
 
 using Box = Eigen::AlignedBox3d;
 
+/// The box of a primitive whose particles are `ids`: the union of their boxes, grown by `margin_m`.
 template <int N>
-Box swept_box(const std::array<int, N>& ids, const Eigen::VectorXd& start_x,
-              const Eigen::VectorXd& end_x, double margin_m) {
+Box box_of(const std::array<int, N>& ids, const ParticleBoxes& boxes, double margin_m) {
   Box box;
   for (int p : ids) {
-    box.extend(Eigen::Vector3d(start_x.segment<3>(3 * p)));
-    box.extend(Eigen::Vector3d(end_x.segment<3>(3 * p)));
+    box.extend(Eigen::Vector3d(boxes.low.col(p)));
+    box.extend(Eigen::Vector3d(boxes.high.col(p)));
   }
   box.min().array() -= margin_m;
   box.max().array() += margin_m;
@@ -131,12 +131,12 @@ bool all_pinned(const SpringModel& model, const std::array<int, 4>& particles) {
   return std::all_of(particles.begin(), particles.end(), [&](int p) { return model.pinned[p]; });
 }
 
-double mean_edge_length_m(const SpringModel& model, const Eigen::VectorXd& x) {
+double mean_edge_length_m(const SpringModel& model, const ParticleBoxes& boxes) {
   double sum_m = 0.0;
   for (Eigen::Index e = 0; e < model.surface_edges.rows(); ++e) {
+    const int a = model.surface_edges(e, 0), b = model.surface_edges(e, 1);
     sum_m +=
-        (x.segment<3>(3 * model.surface_edges(e, 0)) - x.segment<3>(3 * model.surface_edges(e, 1)))
-            .norm();
+        0.5 * (boxes.low.col(a) + boxes.high.col(a) - boxes.low.col(b) - boxes.high.col(b)).norm();
   }
   return model.surface_edges.rows() > 0 ? sum_m / model.surface_edges.rows() : 0.0;
 }
@@ -156,68 +156,171 @@ bool material_neighbours(const CandidatePair& pair, const Eigen::VectorXd& rest_
   return between.squaredNorm() < gap_m * gap_m;
 }
 
+/// The boxes of every vertex (grown by the margin), triangle (not grown) and edge (grown by half
+/// of it), and the grid that hashes them: two primitives' boxes overlap when they are closer than
+/// the margin.
+struct SurfaceBoxes {
+  SurfaceBoxes(const SpringModel& model, const ParticleBoxes& boxes, double margin_m)
+      : vertex(model.particle_count()),
+        triangle(model.triangles.rows()),
+        edge(model.surface_edges.rows()) {
+    for (std::size_t p = 0; p < vertex.size(); ++p) {
+      vertex[p] = box_of<1>({static_cast<int>(p)}, boxes, margin_m);
+    }
+    for (std::size_t t = 0; t < triangle.size(); ++t) {
+      triangle[t] = box_of<3>({model.triangles(t, 0), model.triangles(t, 1), model.triangles(t, 2)},
+                              boxes, 0.0);
+    }
+    for (std::size_t e = 0; e < edge.size(); ++e) {
+      edge[e] =
+          box_of<2>({model.surface_edges(e, 0), model.surface_edges(e, 1)}, boxes, 0.5 * margin_m);
+    }
+    // cells twice the mean edge, or larger if a box is more than 8 cells wide: a cloth that is
+    // blowing up (m/s in the hundreds) must not fill the table with millions of cells
+    double widest_m = 0.0;
+    for (const std::vector<Box>* all : {&vertex, &triangle, &edge}) {
+      for (const Box& box : *all) widest_m = std::max(widest_m, box.sizes().maxCoeff());
+    }
+    grid.cell_m =
+        std::max({2.0 * mean_edge_length_m(model, boxes), 4.0 * margin_m, widest_m / 8.0});
+  }
+  std::vector<Box> vertex, triangle, edge;
+  CellGrid grid{0.0};
+};
+
+/// Makes the candidate pairs of one model, keeping those that are not neighbours.
+struct PairMaker {
+  const SpringModel& model;
+  bool has_rest;
+  double material_gap_m;
+
+  void vertex_triangle(int p, int t, std::vector<CandidatePair>& out) const {
+    const std::array<int, 4> ids{p, model.triangles(t, 0), model.triangles(t, 1),
+                                 model.triangles(t, 2)};
+    if (ids[1] == p || ids[2] == p || ids[3] == p) return;
+    keep({ids, false}, out);
+  }
+  void edge_edge(int e, int f, std::vector<CandidatePair>& out) const {
+    const int a = model.surface_edges(e, 0), b = model.surface_edges(e, 1);
+    const int c = model.surface_edges(f, 0), d = model.surface_edges(f, 1);
+    if (a == c || a == d || b == c || b == d) return;
+    keep({{a, b, c, d}, true}, out);
+  }
+  void keep(const CandidatePair& pair, std::vector<CandidatePair>& out) const {
+    if (all_pinned(model, pair.particle)) return;
+    if (has_rest && material_neighbours(pair, model.rest_x, material_gap_m)) return;
+    out.push_back(pair);
+  }
+};
+
+PairMaker pair_maker(const SpringModel& model, double material_gap_m) {
+  return {model, model.rest_x.size() == 3 * model.particle_count() && material_gap_m > 0.0,
+          material_gap_m};
+}
+
+/// The indices of `rows` (a #items x N index matrix) with a touched particle, in order.
+template <class Rows>
+std::vector<int> touched_rows(const Rows& rows, const std::vector<char>& touched) {
+  std::vector<int> result;
+  for (Eigen::Index i = 0; i < rows.rows(); ++i) {
+    for (Eigen::Index k = 0; k < rows.cols(); ++k) {
+      if (touched[rows(i, k)]) {
+        result.push_back(static_cast<int>(i));
+        break;
+      }
+    }
+  }
+  return result;
+}
+
+std::vector<CandidatePair> concatenated(std::vector<CandidatePair> first,
+                                        const std::vector<CandidatePair>& second) {
+  first.insert(first.end(), second.begin(), second.end());
+  return first;
+}
+
 }  // namespace
+
+ParticleBoxes ParticleBoxes::swept(const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x) {
+  const auto start = start_x.reshaped(3, start_x.size() / 3);
+  const auto end = end_x.reshaped(3, end_x.size() / 3);
+  return {start.cwiseMin(end), start.cwiseMax(end)};
+}
 
 std::vector<CandidatePair> collision_candidates(const SpringModel& model,
                                                 const Eigen::VectorXd& start_x,
                                                 const Eigen::VectorXd& end_x, double margin_m,
                                                 double material_gap_m) {
-  const bool has_rest = model.rest_x.size() == 3 * model.particle_count() && material_gap_m > 0.0;
-  const auto keep = [&](const CandidatePair& pair) {
-    return !all_pinned(model, pair.particle) &&
-           !(has_rest && material_neighbours(pair, model.rest_x, material_gap_m));
-  };
-  const int particles = model.particle_count();
-  const int triangles = static_cast<int>(model.triangles.rows());
-  const int edges = static_cast<int>(model.surface_edges.rows());
-  if (triangles == 0) return {};
-  std::vector<Box> vertex_box(particles), triangle_box(triangles), edge_box(edges);
-  for (int p = 0; p < particles; ++p) {
-    vertex_box[p] = swept_box<1>({p}, start_x, end_x, margin_m);
-  }
-  for (int t = 0; t < triangles; ++t) {
-    triangle_box[t] = swept_box<3>(
-        {model.triangles(t, 0), model.triangles(t, 1), model.triangles(t, 2)}, start_x, end_x, 0.0);
-  }
-  for (int e = 0; e < edges; ++e) {
-    edge_box[e] = swept_box<2>({model.surface_edges(e, 0), model.surface_edges(e, 1)}, start_x,
-                               end_x, 0.5 * margin_m);
-  }
+  return collision_candidates(model, ParticleBoxes::swept(start_x, end_x), margin_m,
+                              material_gap_m);
+}
 
-  // cells twice the mean edge, or larger if a box is more than 8 cells wide: a cloth that is
-  // blowing up (m/s in the hundreds) must not fill the table with millions of cells
-  double widest_m = 0.0;
-  for (const std::vector<Box>* boxes : {&vertex_box, &triangle_box, &edge_box}) {
-    for (const Box& box : *boxes) widest_m = std::max(widest_m, box.sizes().maxCoeff());
+std::vector<CandidatePair> collision_candidates(const SpringModel& model,
+                                                const ParticleBoxes& boxes, double margin_m,
+                                                double material_gap_m) {
+  if (model.triangles.rows() == 0) return {};
+  const SurfaceBoxes surface(model, boxes, margin_m);
+  const PairMaker make = pair_maker(model, material_gap_m);
+  const CellTable triangle_table(surface.triangle, surface.grid);
+  std::vector<CandidatePair> pairs =
+      collect_in_order(model.particle_count(), [&](int p, auto& out) {
+        for_each_overlapping(surface.vertex[p], surface.triangle, surface.grid, triangle_table,
+                             [&](int t) { make.vertex_triangle(p, t, out); });
+      });
+  const CellTable edge_table(surface.edge, surface.grid);
+  const int edges = static_cast<int>(surface.edge.size());
+  return concatenated(std::move(pairs), collect_in_order(edges, [&](int e, auto& out) {
+                        for_each_overlapping(
+                            surface.edge[e], surface.edge, surface.grid, edge_table,
+                            [&](int f) { make.edge_edge(e, f, out); }, /*first=*/e);
+                      }));
+}
+
+std::vector<CandidatePair> collision_candidates_touching(const SpringModel& model,
+                                                         const ParticleBoxes& boxes,
+                                                         double margin_m, double material_gap_m,
+                                                         const std::vector<char>& touched) {
+  if (model.triangles.rows() == 0) return {};
+  const SurfaceBoxes surface(model, boxes, margin_m);
+  const PairMaker make = pair_maker(model, material_gap_m);
+  std::vector<int> touched_vertices;
+  for (int p = 0; p < model.particle_count(); ++p) {
+    if (touched[p]) touched_vertices.push_back(p);
   }
-  const CellGrid grid{
-      std::max({2.0 * mean_edge_length_m(model, end_x), 4.0 * margin_m, widest_m / 8.0})};
+  const std::vector<int> touched_triangles = touched_rows(model.triangles, touched);
+  const std::vector<int> touched_edges = touched_rows(model.surface_edges, touched);
+  std::vector<char> edge_touched(surface.edge.size(), 0);
+  for (int e : touched_edges) edge_touched[e] = 1;
 
-  const CellTable triangle_table(triangle_box, grid);
-  std::vector<CandidatePair> pairs = collect_in_order(particles, [&](int p, auto& out) {
-    for_each_overlapping(vertex_box[p], triangle_box, grid, triangle_table, [&](int t) {
-      const std::array<int, 4> ids{p, model.triangles(t, 0), model.triangles(t, 1),
-                                   model.triangles(t, 2)};
-      if (ids[1] == p || ids[2] == p || ids[3] == p) return;
-      if (const CandidatePair pair{ids, false}; keep(pair)) out.push_back(pair);
-    });
-  });
-
-  const CellTable edge_table(edge_box, grid);
-  std::vector<CandidatePair> edge_pairs = collect_in_order(edges, [&](int e, auto& out) {
-    const int a = model.surface_edges(e, 0), b = model.surface_edges(e, 1);
-    for_each_overlapping(
-        edge_box[e], edge_box, grid, edge_table,
-        [&](int f) {
-          const int c = model.surface_edges(f, 0), d = model.surface_edges(f, 1);
-          const std::array<int, 4> ids{a, b, c, d};
-          if (a == c || a == d || b == c || b == d) return;
-          if (const CandidatePair pair{ids, true}; keep(pair)) out.push_back(pair);
-        },
-        /*first=*/e);
-  });
-  pairs.insert(pairs.end(), edge_pairs.begin(), edge_pairs.end());
-  return pairs;
+  // vertex-triangle pairs: each touched vertex with every triangle, then each touched triangle
+  // with the vertices not touched (the others were just paired with it)
+  const CellTable triangle_table(surface.triangle, surface.grid);
+  std::vector<CandidatePair> pairs =
+      collect_in_order(static_cast<int>(touched_vertices.size()), [&](int i, auto& out) {
+        const int p = touched_vertices[i];
+        for_each_overlapping(surface.vertex[p], surface.triangle, surface.grid, triangle_table,
+                             [&](int t) { make.vertex_triangle(p, t, out); });
+      });
+  const CellTable vertex_table(surface.vertex, surface.grid);
+  pairs = concatenated(
+      std::move(pairs),
+      collect_in_order(static_cast<int>(touched_triangles.size()), [&](int i, auto& out) {
+        const int t = touched_triangles[i];
+        for_each_overlapping(surface.triangle[t], surface.vertex, surface.grid, vertex_table,
+                             [&](int p) {
+                               if (!touched[p]) make.vertex_triangle(p, t, out);
+                             });
+      }));
+  // edge-edge pairs: each touched edge with every edge, a pair of touched ones once
+  const CellTable edge_table(surface.edge, surface.grid);
+  return concatenated(
+      std::move(pairs),
+      collect_in_order(static_cast<int>(touched_edges.size()), [&](int i, auto& out) {
+        const int e = touched_edges[i];
+        for_each_overlapping(surface.edge[e], surface.edge, surface.grid, edge_table, [&](int f) {
+          if (f != e && !(edge_touched[f] && f < e)) make.edge_edge(e, f, out);
+        });
+      }));
 }
 
 }  // namespace tissu

@@ -10,6 +10,16 @@
 
 namespace tissu {
 
+/// Where each particle may be while its pairs serve: an axis-aligned box per particle (m), the
+/// segment a step sweeps or a single point.
+struct ParticleBoxes {
+  Eigen::Matrix3Xd low, high;  ///< 3 x #P corners (m)
+
+  /// The boxes of the straight paths from `start_x` to `end_x` (3#P, m).
+  static ParticleBoxes swept(const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x);
+  int size() const { return static_cast<int>(low.cols()); }
+};
+
 /// Every vertex-triangle pair (the vertex not a corner of the triangle) and edge-edge pair (no
 /// shared end) of `model`'s surface whose boxes, swept from `start_x` to `end_x` (3#P, m) and
 /// grown by `margin_m`, overlap. Primitives are hashed into a uniform grid of cells twice the
@@ -28,5 +38,19 @@ std::vector<CandidatePair> collision_candidates(const SpringModel& model,
                                                 const Eigen::VectorXd& start_x,
                                                 const Eigen::VectorXd& end_x, double margin_m,
                                                 double material_gap_m);
+
+/// The same pairs for primitives spanning the particles' `boxes` (a primitive's box is the union
+/// of its particles' boxes) instead of their paths over one step.
+std::vector<CandidatePair> collision_candidates(const SpringModel& model,
+                                                const ParticleBoxes& boxes, double margin_m,
+                                                double material_gap_m);
+
+/// Only those of the pairs above that have a particle with `touched[p]` (#P flags): what a
+/// neighbour list must find again when some particles leave their boxes (collide with the rest
+/// in O(touched primitives), plus building the hash tables in O(#primitives)).
+std::vector<CandidatePair> collision_candidates_touching(const SpringModel& model,
+                                                         const ParticleBoxes& boxes,
+                                                         double margin_m, double material_gap_m,
+                                                         const std::vector<char>& touched);
 
 }  // namespace tissu

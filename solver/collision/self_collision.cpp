@@ -1,5 +1,6 @@
 #include "solver/collision/self_collision.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,40 @@ PairMotion motion_of(const CandidatePair& pair, const Eigen::VectorXd& start_x,
     m.displacement[k] = end_x.segment<3>(3 * pair.particle[k]) - m.start[k];
   }
   return m;
+}
+
+/// Whether the boxes of the pair's two primitives over the step, the first grown by `reach_m`,
+/// overlap: pairs found for a whole skin around their particles are mostly farther apart than
+/// that, and this test is far cheaper than the pair's own.
+bool within_reach(const CandidatePair& pair, const PairMotion& m, double reach_m) {
+  const int first_primitive_size = pair.edge_edge ? 2 : 1;
+  Eigen::AlignedBox3d first, second;
+  for (int k = 0; k < 4; ++k) {
+    Eigen::AlignedBox3d& box = k < first_primitive_size ? first : second;
+    box.extend(m.start[k]);
+    box.extend(Eigen::Vector3d(m.start[k] + m.displacement[k]));
+  }
+  first.min().array() -= reach_m;
+  first.max().array() += reach_m;
+  return first.intersects(second);
+}
+
+/// The candidates whose primitives come within `reach_m` of each other (by their boxes) on the
+/// way from `start_x` to `end_x`, in order.
+std::vector<CandidatePair> within_reach(const std::vector<CandidatePair>& candidates,
+                                        const Eigen::VectorXd& start_x,
+                                        const Eigen::VectorXd& end_x, double reach_m) {
+  const int n = static_cast<int>(candidates.size());
+  std::vector<char> kept(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i) {
+    kept[i] = within_reach(candidates[i], motion_of(candidates[i], start_x, end_x), reach_m);
+  }
+  std::vector<CandidatePair> result;
+  for (int i = 0; i < n; ++i) {
+    if (kept[i]) result.push_back(candidates[i]);
+  }
+  return result;
 }
 
 /// test(pair, motion) for every candidate, in parallel, keeping the contacts in candidate order.
@@ -225,33 +260,85 @@ int move_zones_rigidly(const SpringModel& model, const Eigen::VectorXd& inverse_
   return zone_particles;
 }
 
-/// Largest distance of a particle from `reference` (m).
-double farthest_move_m(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) {
-  return std::sqrt((x - reference).reshaped(3, x.size() / 3).colwise().squaredNorm().maxCoeff());
+/// When more than one particle in this many leaves its box in a step, the whole cloth is searched
+/// again: the primitives of those particles would be much of the surface.
+constexpr int whole_search_divisor = 8;
+
+/// Whether `x` (m) lies within particle p's box grown by `grow_m` along every axis.
+bool within(const ParticleBoxes& boxes, int p, const Eigen::Vector3d& x, double grow_m) {
+  return (x - boxes.low.col(p)).minCoeff() >= -grow_m &&
+         (boxes.high.col(p) - x).minCoeff() >= -grow_m;
 }
 
-/// The pairs to test this step: the cached ones while every particle's path stays within half the
-/// skin of where they were found (a pair then cannot have come within the thickness unseen), else
-/// a new cache at the end positions; a step that moves a particle farther than that gets pairs of
-/// its own, swept from start to end, and leaves no cache.
+/// Whether particle p's step from `start_x` to `end_x` ends within half the skin of its start.
+bool slow(int p, const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x, double half_skin_m) {
+  return (end_x.segment<3>(3 * p) - start_x.segment<3>(3 * p)).cwiseAbs().maxCoeff() <= half_skin_m;
+}
+
+/// Gives particle p its box for the coming steps: its end position when its step stays within
+/// half the skin of it, so that it may wander that far; else the step's path, searched again at
+/// the next step.
+void place(int p, const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x, double half_skin_m,
+           SelfCollisionCache& cache) {
+  const Eigen::Vector3d start = start_x.segment<3>(3 * p), end = end_x.segment<3>(3 * p);
+  cache.swept[p] = !slow(p, start_x, end_x, half_skin_m);
+  cache.boxes.low.col(p) = cache.swept[p] ? start.cwiseMin(end) : end;
+  cache.boxes.high.col(p) = cache.swept[p] ? start.cwiseMax(end) : end;
+}
+
+/// Whether any of the pair's particles is flagged.
+bool has_flagged(const CandidatePair& pair, const std::vector<char>& flagged) {
+  return std::any_of(pair.particle.begin(), pair.particle.end(), [&](int p) { return flagged[p]; });
+}
+
+/// The pairs to test this step. Every pair of primitives whose paths over the step come within the
+/// thickness is among them: a cached pair's particles stay within half the skin of their boxes
+/// (per axis), so their primitives' boxes grow by less than the skin the cache was searched with.
+/// - No particle left its box: the cached pairs.
+/// - A few left (a sliding hem): their pairs are searched again, with new boxes.
+/// - Many left (a falling cloth): the whole cloth is searched; with new boxes if few particles
+///   move farther than half the skin in the step, else with the step's paths only, and no cache.
 const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
                                                       const SelfCollisionOptions& o,
                                                       const Eigen::VectorXd& start_x,
                                                       const Eigen::VectorXd& end_x,
                                                       SelfCollisionCache& cache) {
   const double half_skin_m = 0.5 * o.skin_m;
-  const bool same_model = cache.built_for_model == model.identity && cache.built_at_x.size() != 0;
-  if (same_model && farthest_move_m(start_x, cache.built_at_x) <= half_skin_m &&
-      farthest_move_m(end_x, cache.built_at_x) <= half_skin_m) {
-    return cache.pairs;
+  const double cached_margin_m = o.thickness_m + o.skin_m;
+  const int particles = model.particle_count();
+  if (cache.built_for_model == model.identity && cache.boxes.size() == particles) {
+    std::vector<char> leaving(particles, 0);
+    int leaving_count = 0;
+    for (int p = 0; p < particles; ++p) {
+      leaving[p] = cache.swept[p] ||
+                   !within(cache.boxes, p, start_x.segment<3>(3 * p), half_skin_m) ||
+                   !within(cache.boxes, p, end_x.segment<3>(3 * p), half_skin_m);
+      leaving_count += leaving[p];
+    }
+    if (leaving_count == 0) return cache.pairs;
+    if (leaving_count * whole_search_divisor <= particles) {
+      for (int p = 0; p < particles; ++p) {
+        if (leaving[p]) place(p, start_x, end_x, half_skin_m, cache);
+      }
+      std::erase_if(cache.pairs,
+                    [&](const CandidatePair& pair) { return has_flagged(pair, leaving); });
+      const std::vector<CandidatePair> found = collision_candidates_touching(
+          model, cache.boxes, cached_margin_m, o.thickness_m, leaving);
+      cache.pairs.insert(cache.pairs.end(), found.begin(), found.end());
+      return cache.pairs;
+    }
   }
   cache.built_for_model = model.identity;
-  if (farthest_move_m(end_x, start_x) <= half_skin_m) {
-    cache.built_at_x = end_x;
-    cache.pairs =
-        collision_candidates(model, end_x, end_x, o.thickness_m + o.skin_m, o.thickness_m);
+  int fast = 0;
+  for (int p = 0; p < particles; ++p) fast += !slow(p, start_x, end_x, half_skin_m);
+  if (fast * whole_search_divisor <= particles) {
+    cache.boxes.low.resize(3, particles);
+    cache.boxes.high.resize(3, particles);
+    cache.swept.assign(particles, 0);
+    for (int p = 0; p < particles; ++p) place(p, start_x, end_x, half_skin_m, cache);
+    cache.pairs = collision_candidates(model, cache.boxes, cached_margin_m, o.thickness_m);
   } else {
-    cache.built_at_x.resize(0);
+    cache.boxes = {};
     cache.pairs = collision_candidates(model, start_x, end_x, o.thickness_m, o.thickness_m);
   }
   return cache.pairs;
@@ -270,8 +357,10 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
     if (!holding_normal.col(p).isZero()) inverse_mass[p] = 0.0;
   }
 
-  const std::vector<CandidatePair>& near =
-      candidates_for_step(model, options, start_x, state.x, cache);
+  // the kept pairs whose primitives come within the thickness in this step
+  const std::vector<CandidatePair> near =
+      within_reach(candidates_for_step(model, options, start_x, state.x, cache), start_x, state.x,
+                   options.thickness_m);
   report.candidates = static_cast<int>(near.size());
   const std::vector<ContactPair> close =
       contacts_among(near, start_x, state.x, [&](const CandidatePair& p, const PairMotion& m) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "solver/collision/collision_pairs.hpp"
 #include "solver/collision/contact_pair.hpp"
 #include "solver/spring_model.hpp"
 
@@ -24,12 +25,17 @@ struct SelfCollisionOptions {
   double skin_m = 0.01;
 };
 
-/// Broad-phase pairs kept from step to step while no particle has moved far from where they were
-/// found: a neighbour list with a skin (Verlet 1967), so that a cloth at rest or moving slowly is
-/// hashed every few steps instead of every step.
+/// Broad-phase pairs kept from step to step: a neighbour list with a skin (Verlet 1967). Each
+/// particle has a box it may wander half the skin out of (per axis) before its pairs must be found
+/// again; those particles' pairs alone are then searched again (a cloth settling while its hem
+/// still slides pays for the hem), and the whole cloth only when many have left at once.
 struct SelfCollisionCache {
-  std::vector<CandidatePair> pairs;   ///< every pair within thickness + skin at `built_at_x`
-  Eigen::VectorXd built_at_x;         ///< 3#P positions when they were found (m); empty: none
+  /// every pair whose boxes, grown by thickness + skin around `boxes`, overlap
+  std::vector<CandidatePair> pairs;
+  ParticleBoxes boxes;  ///< each particle's box when its pairs were found (m); empty: none
+  /// particles whose box is a step's whole path rather than a point: found again next step, to
+  /// shrink their box back to a point once they slow down
+  std::vector<char> swept;
   std::uint64_t built_for_model = 0;  ///< SpringModel::identity they were found on (0 = none)
 };
 

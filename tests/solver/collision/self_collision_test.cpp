@@ -7,6 +7,9 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <limits>
+#include <random>
+#include <set>
+#include <tuple>
 
 #include "solver/collision/collision_pairs.hpp"
 #include "solver/step.hpp"
@@ -201,6 +204,73 @@ TEST(SelfCollision, TheBroadPhaseFindsCloseNonAdjacentPairsOnly) {
                                                              Eigen::Matrix3Xd(), cache, flat_state);
   EXPECT_EQ(report.proximities, 0);
   EXPECT_EQ(report.impacts, 0);
+}
+
+/// A pair as a set element: the same for either order of an edge's ends, of a triangle's corners
+/// and of the two edges of an edge-edge pair.
+std::array<int, 5> pair_key(const CandidatePair& pair) {
+  std::array<int, 4> p = pair.particle;
+  if (pair.edge_edge) {
+    if (p[0] > p[1]) std::swap(p[0], p[1]);
+    if (p[2] > p[3]) std::swap(p[2], p[3]);
+    if (std::tie(p[2], p[3]) < std::tie(p[0], p[1])) p = {p[2], p[3], p[0], p[1]};
+  } else {
+    std::sort(p.begin() + 1, p.end());
+  }
+  return {pair.edge_edge, p[0], p[1], p[2], p[3]};
+}
+
+std::set<std::array<int, 5>> pair_set(const std::vector<CandidatePair>& pairs) {
+  std::set<std::array<int, 5>> keys;
+  for (const CandidatePair& pair : pairs) keys.insert(pair_key(pair));
+  return keys;
+}
+
+TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewParticlesRoam) {
+  // the upper sheet 6 mm above the lower one; the lower sheet is still, the upper one trembles by
+  // up to 1 mm per step, and a few of its particles (a different few each step) jump by up to
+  // 3 cm: their pairs are found again, the others kept
+  StackedSheets scene;
+  const int particles = scene.model.particle_count();
+  for (int p = side * side; p < particles; ++p) scene.state.x[3 * p + 2] -= 0.044;
+  SelfCollisionOptions options;
+  options.enabled = true;
+  options.thickness_m = thickness_m;
+  SelfCollisionCache cache;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Eigen::VectorXd x = scene.state.x;
+  int roamers_seen = 0;
+  Eigen::Vector3d still_box_low;
+  const int still = side * side / 2;  // a particle of the lower sheet
+  for (int n = 0; n < 40; ++n) {
+    Eigen::VectorXd end_x = x;
+    for (int p = side * side; p < particles; ++p) {
+      const double reach_m = (p + 7 * n) % 29 == 0 ? 0.03 : 0.001;
+      for (int k = 0; k < 3; ++k) end_x[3 * p + k] += reach_m * unit(random);
+    }
+    State state = scene.state;
+    state.x = end_x;
+    resolve_self_collisions(scene.model, options, 1.0 / 60.0, x, Eigen::Matrix3Xd(), cache, state);
+    const std::set<std::array<int, 5>> kept = pair_set(cache.pairs);
+    ASSERT_EQ(kept.size(), cache.pairs.size()) << "a pair kept twice, step " << n;
+    for (const CandidatePair& pair :
+         collision_candidates(scene.model, x, end_x, thickness_m, thickness_m)) {
+      ASSERT_TRUE(kept.count(pair_key(pair))) << "a pair within reach was not kept, step " << n;
+    }
+    // the kept pairs are exactly those of a whole search around the particles' boxes
+    ASSERT_EQ(cache.boxes.size(), particles);
+    EXPECT_EQ(kept, pair_set(collision_candidates(scene.model, cache.boxes,
+                                                  thickness_m + options.skin_m, thickness_m)))
+        << "step " << n;
+    roamers_seen += static_cast<int>(std::count(cache.swept.begin(), cache.swept.end(), 1));
+    if (n == 0) still_box_low = cache.boxes.low.col(still);
+    x = end_x;
+  }
+  EXPECT_GT(roamers_seen, 40) << "no particle left its box: the partial search went untested";
+  // a particle that never moved keeps the box it got at the first step: the cloth was never
+  // searched whole again
+  EXPECT_EQ(cache.boxes.low.col(still), still_box_low);
 }
 
 TEST(SelfCollision, GivesTheSameStepWithOneAndTwoThreads) {
