@@ -45,9 +45,9 @@ bool within_reach(const CandidatePair& pair, const PairMotion& m, double reach_m
 
 /// The candidates whose primitives come within `reach_m` of each other (by their boxes) on the
 /// way from `start_x` to `end_x`, in order.
-std::vector<CandidatePair> within_reach(const std::vector<CandidatePair>& candidates,
-                                        const Eigen::VectorXd& start_x,
-                                        const Eigen::VectorXd& end_x, double reach_m) {
+std::vector<CandidatePair> pairs_within_reach(const std::vector<CandidatePair>& candidates,
+                                              const Eigen::VectorXd& start_x,
+                                              const Eigen::VectorXd& end_x, double reach_m) {
   const int n = static_cast<int>(candidates.size());
   std::vector<char> kept(n);
 #pragma omp parallel for schedule(static) if (n >= min_parallel_items)
@@ -359,8 +359,8 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
 
   // the kept pairs whose primitives come within the thickness in this step
   const std::vector<CandidatePair> near =
-      within_reach(candidates_for_step(model, options, start_x, state.x, cache), start_x, state.x,
-                   options.thickness_m);
+      pairs_within_reach(candidates_for_step(model, options, start_x, state.x, cache), start_x,
+                         state.x, options.thickness_m);
   report.candidates = static_cast<int>(near.size());
   const std::vector<ContactPair> close =
       contacts_among(near, start_x, state.x, [&](const CandidatePair& p, const PairMotion& m) {
