@@ -2,9 +2,9 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
-#include <vector>
 
 #include "solver/collision/primitive_distance.hpp"
 
@@ -48,11 +48,20 @@ Eigen::Vector3d oriented_normal(const CandidatePair& pair, const PairMotion& m,
   return relative_position(m, w, 0.0).dot(n) < 0.0 ? Eigen::Vector3d(-n) : n;
 }
 
+/// Up to five roots in [0, 1], ascending (a root per piece between turning points, and t = 1).
+struct UnitIntervalRoots {
+  std::array<double, 5> t{};
+  int count = 0;
+  const double* begin() const { return t.data(); }
+  const double* end() const { return t.data() + count; }
+};
+
 /// Roots in [0, 1] of c3 t^3 + c2 t^2 + c1 t + c0, ascending: the interval is cut at the turning
 /// points, and each piece holding a sign change is bisected to double precision.
-std::vector<double> cubic_roots_in_unit_interval(double c3, double c2, double c1, double c0) {
+UnitIntervalRoots cubic_roots_in_unit_interval(double c3, double c2, double c1, double c0) {
   auto f = [&](double t) { return ((c3 * t + c2) * t + c1) * t + c0; };
-  std::vector<double> cuts{0.0};
+  std::array<double, 4> cuts{0.0};
+  int cut_count = 1;
   // turning points: 3 c3 t^2 + 2 c2 t + c1 = 0
   const double a = 3.0 * c3, b = 2.0 * c2, c = c1;
   if (std::abs(a) > 0.0) {
@@ -60,21 +69,21 @@ std::vector<double> cubic_roots_in_unit_interval(double c3, double c2, double c1
     if (discriminant >= 0.0) {
       const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
       for (double t : {q / a, q != 0.0 ? c / q : -1.0}) {
-        if (t > 0.0 && t < 1.0) cuts.push_back(t);
+        if (t > 0.0 && t < 1.0) cuts[cut_count++] = t;
       }
     }
   } else if (std::abs(b) > 0.0 && -c / b > 0.0 && -c / b < 1.0) {
-    cuts.push_back(-c / b);
+    cuts[cut_count++] = -c / b;
   }
-  cuts.push_back(1.0);
-  std::sort(cuts.begin(), cuts.end());
-  std::vector<double> roots;
-  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+  cuts[cut_count++] = 1.0;
+  std::sort(cuts.begin(), cuts.begin() + cut_count);
+  UnitIntervalRoots roots;
+  for (int k = 0; k + 1 < cut_count; ++k) {
     double lo = cuts[k], hi = cuts[k + 1];
     double f_lo = f(lo);
     const double f_hi = f(hi);
     if (f_lo == 0.0) {
-      roots.push_back(lo);
+      roots.t[roots.count++] = lo;
       continue;
     }
     if ((f_lo < 0.0) == (f_hi < 0.0)) continue;
@@ -88,10 +97,24 @@ std::vector<double> cubic_roots_in_unit_interval(double c3, double c2, double c1
         hi = mid;
       }
     }
-    roots.push_back(0.5 * (lo + hi));
+    roots.t[roots.count++] = 0.5 * (lo + hi);
   }
-  if (f(1.0) == 0.0) roots.push_back(1.0);
+  if (f(1.0) == 0.0) roots.t[roots.count++] = 1.0;
   return roots;
+}
+
+/// The largest relative displacement over the step of a corner of the first primitive and one of
+/// the second (m).
+double largest_relative_displacement_m(const CandidatePair& pair, const PairMotion& m) {
+  const int first_size = pair.edge_edge ? 2 : 1;
+  double largest_squared = 0.0;
+  for (int i = 0; i < first_size; ++i) {
+    for (int j = first_size; j < 4; ++j) {
+      largest_squared =
+          std::max(largest_squared, (m.displacement[i] - m.displacement[j]).squaredNorm());
+    }
+  }
+  return std::sqrt(largest_squared);
 }
 
 }  // namespace
@@ -112,6 +135,11 @@ std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const Pai
   return contact;
 }
 
+bool stays_farther_than(const CandidatePair& pair, const PairMotion& m, double distance_m) {
+  const double end_distance_m = relative_position(m, closest_weights(pair, m, 1.0), 1.0).norm();
+  return end_distance_m - largest_relative_displacement_m(pair, m) > distance_m;
+}
+
 std::optional<ContactPair> first_impact(const CandidatePair& pair, const PairMotion& m,
                                         double tolerance_m) {
   // (a + t da) x (b + t db) . (c + t dc), relative to particle 0
@@ -124,6 +152,7 @@ std::optional<ContactPair> first_impact(const CandidatePair& pair, const PairMot
   const double c2 = mixed.dot(dc) + daxdb.dot(c);
   const double c3 = daxdb.dot(dc);
   if (cubic_keeps_its_sign_on_unit_interval(c3, c2, c1, c0)) return std::nullopt;  // never coplanar
+  if (stays_farther_than(pair, m, tolerance_m)) return std::nullopt;  // coplanar but apart
   for (double t : cubic_roots_in_unit_interval(c3, c2, c1, c0)) {
     const Eigen::Vector4d w = closest_weights(pair, m, t);
     if (relative_position(m, w, t).norm() > tolerance_m) continue;

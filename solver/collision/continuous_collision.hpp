@@ -28,6 +28,13 @@ std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const Pai
 /// Tong 2010, "Fast continuous collision detection using deforming non-penetration filters").
 bool cubic_keeps_its_sign_on_unit_interval(double c3, double c2, double c1, double c0);
 
+/// True when the pair's primitives stay farther apart than `distance_m` all step. Any two of
+/// their points close in by a convex combination of the relative displacements of their corners,
+/// so the distance at time t is at least the distance at the end less (1 - t) times the largest
+/// of those (the bound of conservative advancement, Mirtich 1996). A flat sheet's
+/// neighbours are coplanar all step, so the coplanarity cubic cannot rule them out; this can.
+bool stays_farther_than(const CandidatePair& pair, const PairMotion& motion, double distance_m);
+
 /// The first time in [0, 1] at which the four points are coplanar with the closest points of the
 /// pair within `tolerance_m` of each other (the pair touches), found from the roots of the cubic
 /// (x1 - x0) x (x2 - x0) . (x3 - x0) = 0 in t (Provot 1997; Bridson, Fedkiw & Anderson 2002).
