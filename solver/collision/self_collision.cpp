@@ -1,6 +1,5 @@
 #include "solver/collision/self_collision.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,20 +26,24 @@ PairMotion motion_of(const CandidatePair& pair, const Eigen::VectorXd& start_x,
   return m;
 }
 
-/// Whether the boxes of the pair's two primitives over the step, the first grown by `reach_m`,
-/// overlap: pairs found for a whole skin around their particles are mostly farther apart than
-/// that, and this test is far cheaper than the pair's own.
-bool within_reach(const CandidatePair& pair, const PairMotion& m, double reach_m) {
-  const int first_primitive_size = pair.edge_edge ? 2 : 1;
-  Eigen::AlignedBox3d first, second;
-  for (int k = 0; k < 4; ++k) {
-    Eigen::AlignedBox3d& box = k < first_primitive_size ? first : second;
-    box.extend(m.start[k]);
-    box.extend(Eigen::Vector3d(m.start[k] + m.displacement[k]));
+/// Whether the boxes of the pair's two primitives over the step (`step`: each particle's), the
+/// first grown by `reach_m`, overlap: pairs kept for a whole skin around their particles are
+/// mostly farther apart than that, and this test is far cheaper than the pair's own.
+bool within_reach(const CandidatePair& pair, const ParticleBoxes& step, double reach_m) {
+  const int first_size = pair.edge_edge ? 2 : 1;
+  Eigen::Array3d first_low = step.low.col(pair.particle[0]),
+                 first_high = step.high.col(pair.particle[0]);
+  if (first_size == 2) {
+    first_low = first_low.min(step.low.col(pair.particle[1]).array());
+    first_high = first_high.max(step.high.col(pair.particle[1]).array());
   }
-  first.min().array() -= reach_m;
-  first.max().array() += reach_m;
-  return first.intersects(second);
+  Eigen::Array3d second_low = step.low.col(pair.particle[first_size]),
+                 second_high = step.high.col(pair.particle[first_size]);
+  for (int k = first_size + 1; k < 4; ++k) {
+    second_low = second_low.min(step.low.col(pair.particle[k]).array());
+    second_high = second_high.max(step.high.col(pair.particle[k]).array());
+  }
+  return (first_low - reach_m <= second_high).all() && (second_low <= first_high + reach_m).all();
 }
 
 /// The candidates whose primitives come within `reach_m` of each other (by their boxes) on the
@@ -48,12 +51,11 @@ bool within_reach(const CandidatePair& pair, const PairMotion& m, double reach_m
 std::vector<CandidatePair> pairs_within_reach(const std::vector<CandidatePair>& candidates,
                                               const Eigen::VectorXd& start_x,
                                               const Eigen::VectorXd& end_x, double reach_m) {
+  const ParticleBoxes step = ParticleBoxes::swept(start_x, end_x);
   const int n = static_cast<int>(candidates.size());
   std::vector<char> kept(n);
 #pragma omp parallel for schedule(static) if (n >= min_parallel_items)
-  for (int i = 0; i < n; ++i) {
-    kept[i] = within_reach(candidates[i], motion_of(candidates[i], start_x, end_x), reach_m);
-  }
+  for (int i = 0; i < n; ++i) kept[i] = within_reach(candidates[i], step, reach_m);
   std::vector<CandidatePair> result;
   for (int i = 0; i < n; ++i) {
     if (kept[i]) result.push_back(candidates[i]);
