@@ -78,12 +78,16 @@ struct CellTable {
     for (const auto& [key, b] : entries) primitives[cursor[key & bucket_mask]++] = b;
   }
 
-  /// Calls visit(primitive) for each primitive in the bucket of `key`, each once.
+  /// Calls visit(primitive) for each primitive numbered above `first` in the bucket of `key`,
+  /// each once. A bucket lists its primitives in ascending order (the counting sort is stable),
+  /// so those at or below `first` are skipped by a binary search, unread.
   template <class Visit>
-  void for_each_in(std::uint64_t key, Visit&& visit) const {
+  void for_each_in(std::uint64_t key, int first, Visit&& visit) const {
     const std::uint64_t bucket = key & bucket_mask;
-    for (int k = bucket_start[bucket]; k < bucket_start[bucket + 1]; ++k) {
-      if (k == bucket_start[bucket] || primitives[k] != primitives[k - 1]) visit(primitives[k]);
+    const auto begin = primitives.begin() + bucket_start[bucket];
+    const auto end = primitives.begin() + bucket_start[bucket + 1];
+    for (auto k = std::upper_bound(begin, end, first); k != end; ++k) {
+      if (k == begin || *k != *(k - 1)) visit(*k);
     }
   }
 };
@@ -109,7 +113,7 @@ std::vector<CandidatePair> collect_in_order(int n, Collect&& collect) {
 
 /// Calls visit(primitive) for each primitive of `table` whose box overlaps `box`, once: a pair of
 /// overlapping boxes is reported only from the cell holding the low corner of their overlap.
-/// Primitives numbered `first` or below are skipped before any test.
+/// Primitives numbered `first` or below are skipped unread.
 template <class Visit>
 void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const CellGrid& grid,
                           const CellTable& table, Visit&& visit, int first = -1) {
@@ -117,8 +121,8 @@ void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const C
   for (int i = lo.x(); i <= hi.x(); ++i) {
     for (int j = lo.y(); j <= hi.y(); ++j) {
       for (int k = lo.z(); k <= hi.z(); ++k) {
-        table.for_each_in(CellGrid::key(i, j, k), [&](int b) {
-          if (b <= first || !box.intersects(boxes[b])) return;
+        table.for_each_in(CellGrid::key(i, j, k), first, [&](int b) {
+          if (!box.intersects(boxes[b])) return;
           const Eigen::Vector3i overlap_cell = grid.cell_of(box.min().cwiseMax(boxes[b].min()));
           if (overlap_cell == Eigen::Vector3i(i, j, k)) visit(b);
         });
