@@ -78,16 +78,12 @@ struct CellTable {
     for (const auto& [key, b] : entries) primitives[cursor[key & bucket_mask]++] = b;
   }
 
-  /// Calls visit(primitive) for each primitive numbered above `first` in the bucket of `key`,
-  /// each once. A bucket lists its primitives in ascending order (the counting sort is stable),
-  /// so those at or below `first` are skipped by a binary search, unread.
+  /// Calls visit(primitive) for each primitive in the bucket of `key`, each once.
   template <class Visit>
-  void for_each_in(std::uint64_t key, int first, Visit&& visit) const {
+  void for_each_in(std::uint64_t key, Visit&& visit) const {
     const std::uint64_t bucket = key & bucket_mask;
-    const auto begin = primitives.begin() + bucket_start[bucket];
-    const auto end = primitives.begin() + bucket_start[bucket + 1];
-    for (auto k = std::upper_bound(begin, end, first); k != end; ++k) {
-      if (k == begin || *k != *(k - 1)) visit(*k);
+    for (int k = bucket_start[bucket]; k < bucket_start[bucket + 1]; ++k) {
+      if (k == bucket_start[bucket] || primitives[k] != primitives[k - 1]) visit(primitives[k]);
     }
   }
 };
@@ -113,7 +109,7 @@ std::vector<CandidatePair> collect_in_order(int n, Collect&& collect) {
 
 /// Calls visit(primitive) for each primitive of `table` whose box overlaps `box`, once: a pair of
 /// overlapping boxes is reported only from the cell holding the low corner of their overlap.
-/// Primitives numbered `first` or below are skipped unread.
+/// Primitives numbered `first` or below are skipped before any test.
 template <class Visit>
 void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const CellGrid& grid,
                           const CellTable& table, Visit&& visit, int first = -1) {
@@ -121,8 +117,8 @@ void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const C
   for (int i = lo.x(); i <= hi.x(); ++i) {
     for (int j = lo.y(); j <= hi.y(); ++j) {
       for (int k = lo.z(); k <= hi.z(); ++k) {
-        table.for_each_in(CellGrid::key(i, j, k), first, [&](int b) {
-          if (!box.intersects(boxes[b])) return;
+        table.for_each_in(CellGrid::key(i, j, k), [&](int b) {
+          if (b <= first || !box.intersects(boxes[b])) return;
           const Eigen::Vector3i overlap_cell = grid.cell_of(box.min().cwiseMax(boxes[b].min()));
           if (overlap_cell == Eigen::Vector3i(i, j, k)) visit(b);
         });
@@ -133,16 +129,6 @@ void for_each_overlapping(const Box& box, const std::vector<Box>& boxes, const C
 
 bool all_pinned(const SpringModel& model, const std::array<int, 4>& particles) {
   return std::all_of(particles.begin(), particles.end(), [&](int p) { return model.pinned[p]; });
-}
-
-double mean_edge_length_m(const SpringModel& model, const ParticleBoxes& boxes) {
-  double sum_m = 0.0;
-  for (Eigen::Index e = 0; e < model.surface_edges.rows(); ++e) {
-    const int a = model.surface_edges(e, 0), b = model.surface_edges(e, 1);
-    sum_m +=
-        0.5 * (boxes.low.col(a) + boxes.high.col(a) - boxes.low.col(b) - boxes.high.col(b)).norm();
-  }
-  return model.surface_edges.rows() > 0 ? sum_m / model.surface_edges.rows() : 0.0;
 }
 
 /// Whether the pair's primitives lie closer than `gap_m` in material coordinates `rest_x`.
@@ -244,6 +230,16 @@ std::vector<CandidatePair> concatenated(std::vector<CandidatePair> first,
 }
 
 }  // namespace
+
+double mean_edge_length_m(const SpringModel& model, const ParticleBoxes& boxes) {
+  double sum_m = 0.0;
+  for (Eigen::Index e = 0; e < model.surface_edges.rows(); ++e) {
+    const int a = model.surface_edges(e, 0), b = model.surface_edges(e, 1);
+    sum_m +=
+        0.5 * (boxes.low.col(a) + boxes.high.col(a) - boxes.low.col(b) - boxes.high.col(b)).norm();
+  }
+  return model.surface_edges.rows() > 0 ? sum_m / model.surface_edges.rows() : 0.0;
+}
 
 ParticleBoxes ParticleBoxes::swept(const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x) {
   const auto start = start_x.reshaped(3, start_x.size() / 3);

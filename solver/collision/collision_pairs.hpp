@@ -20,6 +20,9 @@ struct ParticleBoxes {
   int size() const { return static_cast<int>(low.cols()); }
 };
 
+/// The mean length of the surface's edges between the centres of their ends' boxes (m).
+double mean_edge_length_m(const SpringModel& model, const ParticleBoxes& boxes);
+
 /// Every vertex-triangle pair (the vertex not a corner of the triangle) and edge-edge pair (no
 /// shared end) of `model`'s surface whose boxes, swept from `start_x` to `end_x` (3#P, m) and
 /// grown by `margin_m`, overlap. Primitives are hashed into a uniform grid of cells twice the

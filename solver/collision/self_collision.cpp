@@ -300,13 +300,19 @@ bool has_flagged(const CandidatePair& pair, const std::vector<char>& flagged) {
 /// - A few left (a sliding hem): their pairs are searched again, with new boxes.
 /// - Many left (a falling cloth): the whole cloth is searched; with new boxes if few particles
 ///   move farther than half the skin in the step, else with the step's paths only, and no cache.
+/// The skin is the option's, at most half the mean edge: the kept pairs grow with the square of
+/// the skin over the edge (a 1 cm skin on 1 cm edges keeps 200 pairs per particle).
 const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
                                                       const SelfCollisionOptions& o,
                                                       const Eigen::VectorXd& start_x,
                                                       const Eigen::VectorXd& end_x,
                                                       SelfCollisionCache& cache) {
-  const double half_skin_m = 0.5 * o.skin_m;
-  const double cached_margin_m = o.thickness_m + o.skin_m;
+  if (cache.built_for_model != model.identity) {
+    cache.skin_m =
+        std::min(o.skin_m, 0.5 * mean_edge_length_m(model, ParticleBoxes::swept(end_x, end_x)));
+  }
+  const double half_skin_m = 0.5 * cache.skin_m;
+  const double cached_margin_m = o.thickness_m + cache.skin_m;
   const int particles = model.particle_count();
   if (cache.built_for_model == model.identity && cache.boxes.size() == particles) {
     std::vector<char> leaving(particles, 0);

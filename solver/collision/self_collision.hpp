@@ -21,7 +21,8 @@ struct SelfCollisionOptions {
   /// passes of continuous collision impulses before the remaining pairs are frozen into rigid
   /// impact zones
   int impulse_passes = 4;
-  /// extra distance the cached pairs cover (m): they serve until a particle moves half of it
+  /// extra distance the cached pairs cover (m), at most half the mean edge: they serve until a
+  /// particle moves half of it
   double skin_m = 0.01;
 };
 
@@ -37,6 +38,7 @@ struct SelfCollisionCache {
   /// shrink their box back to a point once they slow down
   std::vector<char> swept;
   std::uint64_t built_for_model = 0;  ///< SpringModel::identity they were found on (0 = none)
+  double skin_m = 0.0;  ///< the skin they were found with: the option's, at most half the mean edge
 };
 
 /// What one step's self-collision handling found.

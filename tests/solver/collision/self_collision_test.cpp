@@ -261,7 +261,7 @@ TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewPa
     // the kept pairs are exactly those of a whole search around the particles' boxes
     ASSERT_EQ(cache.boxes.size(), particles);
     EXPECT_EQ(kept, pair_set(collision_candidates(scene.model, cache.boxes,
-                                                  thickness_m + options.skin_m, thickness_m)))
+                                                  thickness_m + cache.skin_m, thickness_m)))
         << "step " << n;
     roamers_seen += static_cast<int>(std::count(cache.swept.begin(), cache.swept.end(), 1));
     if (n == 0) still_box_low = cache.boxes.low.col(still);
