@@ -43,7 +43,7 @@ struct SelfCollisionCache {
 
 /// What one step's self-collision handling found.
 struct SelfCollisionReport {
-  int candidates = 0;      ///< pairs from the broad phase at the end of the step
+  int candidates = 0;      ///< pairs from the broad phase within the thickness over the step
   int proximities = 0;     ///< pairs closer than the thickness, pushed apart
   int impacts = 0;         ///< crossings during the step stopped by impulses, over all passes
   int zone_particles = 0;  ///< particles moved rigidly in impact zones
