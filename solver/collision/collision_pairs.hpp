@@ -18,6 +18,8 @@ struct ParticleBoxes {
   /// The boxes of the straight paths from `start_x` to `end_x` (3#P, m).
   static ParticleBoxes swept(const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x);
   int size() const { return static_cast<int>(low.cols()); }
+  /// Whether particle p's box is a path rather than a single point.
+  bool is_path(int p) const { return low.col(p) != high.col(p); }
 };
 
 /// The mean length of the surface's edges between the centres of their ends' boxes (m).

@@ -24,6 +24,9 @@ struct ContactPair {
 struct CandidatePair {
   std::array<int, 4> particle{};
   bool edge_edge = false;
+
+  /// How many of `particle` are the first primitive's corners; the rest are the second's.
+  int first_primitive_size() const { return edge_edge ? 2 : 1; }
 };
 
 }  // namespace tissu

@@ -106,7 +106,7 @@ UnitIntervalRoots cubic_roots_in_unit_interval(double c3, double c2, double c1, 
 /// The largest relative displacement over the step of a corner of the first primitive and one of
 /// the second (m).
 double largest_relative_displacement_m(const CandidatePair& pair, const PairMotion& m) {
-  const int first_size = pair.edge_edge ? 2 : 1;
+  const int first_size = pair.first_primitive_size();
   double largest_squared = 0.0;
   for (int i = 0; i < first_size; ++i) {
     for (int j = first_size; j < 4; ++j) {

@@ -33,10 +33,10 @@ struct SelfCollisionOptions {
 struct SelfCollisionCache {
   /// every pair whose boxes, grown by thickness + skin around `boxes`, overlap
   std::vector<CandidatePair> pairs;
-  ParticleBoxes boxes;  ///< each particle's box when its pairs were found (m); empty: none
-  /// particles whose box is a step's whole path rather than a point: found again next step, to
-  /// shrink their box back to a point once they slow down
-  std::vector<char> swept;
+  /// each particle's box when its pairs were found (m); empty: none. A box that is a step's whole
+  /// path rather than a point is searched again at the next step, to shrink back to a point once
+  /// its particle slows down.
+  ParticleBoxes boxes;
   std::uint64_t built_for_model = 0;  ///< SpringModel::identity they were found on (0 = none)
   double skin_m = 0.0;  ///< the skin they were found with: the option's, at most half the mean edge
 };
