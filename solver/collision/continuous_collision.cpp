@@ -126,18 +126,23 @@ bool cubic_keeps_its_sign_on_unit_interval(double c3, double c2, double c1, doub
   return std::min({b0, b1, b2, b3}) > margin || std::max({b0, b1, b2, b3}) < -margin;
 }
 
-std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
-                                            double thickness_m) {
+EndProximity proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
+                              double thickness_m) {
   const Eigen::Vector4d w = closest_weights(pair, motion, 1.0);
   const double distance_m = relative_position(motion, w, 1.0).norm();
-  if (distance_m >= thickness_m) return std::nullopt;
-  ContactPair contact{pair.particle, w, oriented_normal(pair, motion, w, 1.0), distance_m};
-  return contact;
+  if (distance_m >= thickness_m) return {distance_m, std::nullopt};
+  return {distance_m,
+          ContactPair{pair.particle, w, oriented_normal(pair, motion, w, 1.0), distance_m}};
 }
 
 bool stays_farther_than(const CandidatePair& pair, const PairMotion& m, double distance_m) {
   const double end_distance_m = relative_position(m, closest_weights(pair, m, 1.0), 1.0).norm();
-  return end_distance_m - largest_relative_displacement_m(pair, m) > distance_m;
+  return stays_farther_than(pair, m, distance_m, end_distance_m);
+}
+
+bool stays_farther_than(const CandidatePair& pair, const PairMotion& m, double distance_m,
+                        double end_distance_at_least_m) {
+  return end_distance_at_least_m - largest_relative_displacement_m(pair, m) > distance_m;
 }
 
 std::optional<ContactPair> first_impact(const CandidatePair& pair, const PairMotion& m,

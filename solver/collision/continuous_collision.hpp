@@ -17,10 +17,16 @@ struct PairMotion {
   Eigen::Vector3d at(int k, double t) const { return start[k] + t * displacement[k]; }
 };
 
-/// The pair's closest points at the end of the step, if they are closer than `thickness_m`; the
-/// normal is oriented by the side the pair started on.
-std::optional<ContactPair> proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
-                                            double thickness_m);
+/// The pair at the end of the step: the distance between its primitives, and their closest points
+/// if they are closer than the thickness, with the normal oriented by the side the pair started on.
+struct EndProximity {
+  double distance_m = 0.0;
+  std::optional<ContactPair> contact;
+};
+
+/// The pair at the end of the step, against a thickness `thickness_m`.
+EndProximity proximity_at_end(const CandidatePair& pair, const PairMotion& motion,
+                              double thickness_m);
 
 /// True when c3 t^3 + c2 t^2 + c1 t + c0 cannot vanish on [0, 1]: its Bernstein coefficients there
 /// (c0, c0 + c1/3, c0 + 2 c1/3 + c2/3, c0 + c1 + c2 + c3) all have one sign, clear of round-off,
@@ -34,6 +40,11 @@ bool cubic_keeps_its_sign_on_unit_interval(double c3, double c2, double c1, doub
 /// of those (the bound of conservative advancement, Mirtich 1996). A flat sheet's
 /// neighbours are coplanar all step, so the coplanarity cubic cannot rule them out; this can.
 bool stays_farther_than(const CandidatePair& pair, const PairMotion& motion, double distance_m);
+
+/// The same test from a lower bound `end_distance_at_least_m` on the distance at the end of the
+/// step (m), known without computing the closest points.
+bool stays_farther_than(const CandidatePair& pair, const PairMotion& motion, double distance_m,
+                        double end_distance_at_least_m);
 
 /// The first time in [0, 1] at which the four points are coplanar with the closest points of the
 /// pair within `tolerance_m` of each other (the pair touches), found from the roots of the cubic

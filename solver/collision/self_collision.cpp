@@ -82,6 +82,62 @@ std::vector<ContactPair> contacts_among(const std::vector<CandidatePair>& candid
   return contacts;
 }
 
+/// Step 1's test: the candidates closer than `thickness_m` at the end of the step, in candidate
+/// order, and every candidate's distance at the end (`end_distance_m`, m), for may_still_touch.
+std::vector<ContactPair> proximities(const std::vector<CandidatePair>& candidates,
+                                     const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x,
+                                     double thickness_m, std::vector<double>& end_distance_m) {
+  const int n = static_cast<int>(candidates.size());
+  std::vector<EndProximity> found(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i)
+    found[i] =
+        proximity_at_end(candidates[i], motion_of(candidates[i], start_x, end_x), thickness_m);
+  std::vector<ContactPair> contacts;
+  end_distance_m.resize(n);
+  for (int i = 0; i < n; ++i) {
+    end_distance_m[i] = found[i].distance_m;
+    if (found[i].contact) contacts.push_back(*found[i].contact);
+  }
+  return contacts;
+}
+
+/// The candidates that may touch (within `tolerance_m`) during the step after step 1 moved the
+/// end positions from `before_x` to `end_x`: those first_impact could find crossing. A pair's
+/// distance at the end is at least its distance before (`end_distance_m`) less the farthest a
+/// corner of each primitive moved, since each primitive's closest point is a convex combination
+/// of its corners; conservative advancement (stays_farther_than) rules out the others. On a flat
+/// sheet, most candidates are coplanar neighbours a good part of an edge apart: this spares
+/// their closest points a second computation.
+std::vector<CandidatePair> may_still_touch(const std::vector<CandidatePair>& candidates,
+                                           const std::vector<double>& end_distance_m,
+                                           const Eigen::VectorXd& before_x,
+                                           const Eigen::VectorXd& start_x,
+                                           const Eigen::VectorXd& end_x, double tolerance_m) {
+  const Eigen::VectorXd moved_m =
+      (end_x - before_x).reshaped(3, end_x.size() / 3).colwise().norm().transpose();
+  const int n = static_cast<int>(candidates.size());
+  std::vector<char> kept(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i) {
+    const CandidatePair& pair = candidates[i];
+    const int first_size = pair.first_primitive_size();
+    double first_moved_m = 0.0, second_moved_m = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      double& moved = k < first_size ? first_moved_m : second_moved_m;
+      moved = std::max(moved, moved_m[pair.particle[k]]);
+    }
+    // twice the tolerance: the bound must not rule out a pair the exact test, in round-off, keeps
+    kept[i] = !stays_farther_than(pair, motion_of(pair, start_x, end_x), 2.0 * tolerance_m,
+                                  end_distance_m[i] - first_moved_m - second_moved_m);
+  }
+  std::vector<CandidatePair> result;
+  for (int i = 0; i < n; ++i) {
+    if (kept[i]) result.push_back(candidates[i]);
+  }
+  return result;
+}
+
 /// Per-particle changes summed over pairs, then averaged over the pairs of each particle.
 struct Corrections {
   explicit Corrections(int particles)
@@ -371,11 +427,11 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
       pairs_within_reach(candidates_for_step(model, options, start_x, state.x, cache), start_x,
                          state.x, options.thickness_m);
   report.candidates = static_cast<int>(near.size());
+  std::vector<double> end_distance_m;
   const std::vector<ContactPair> close =
-      contacts_among(near, start_x, state.x, [&](const CandidatePair& p, const PairMotion& m) {
-        return proximity_at_end(p, m, options.thickness_m);
-      });
+      proximities(near, start_x, state.x, options.thickness_m, end_distance_m);
   report.proximities = static_cast<int>(close.size());
+  const Eigen::VectorXd before_repel_x = state.x;
   repel(mobility, inverse_mass, close, options, h, state);
 
   // the impulse passes look for crossings among the pairs found above: their corrections move
@@ -387,7 +443,10 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
                           });
   };
   for (int pass = 0; pass < options.impulse_passes; ++pass) {
-    const std::vector<ContactPair> impacts = crossings_among(near);
+    const std::vector<ContactPair> impacts =
+        pass == 0 ? crossings_among(may_still_touch(near, end_distance_m, before_repel_x, start_x,
+                                                    state.x, touching_m))
+                  : crossings_among(near);
     if (impacts.empty()) return report;
     report.impacts += static_cast<int>(impacts.size());
     stop_crossings(mobility, impacts, start_x, h, state);

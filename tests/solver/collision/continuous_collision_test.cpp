@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
 
 #include "solver/collision/primitive_distance.hpp"
@@ -119,13 +121,58 @@ TEST(StaysFartherThan, RulesOutOnlyPairsThatNeverComeThatClose) {
                                   vertex_over_triangle({0.2, 0.3, 0.4}, {0.0, 0.0, -1.0}), 1e-9));
 }
 
+TEST(StaysFartherThan, RulesOutFromAnEndDistanceKnownBeforeTheCornersMoved) {
+  // self-collision's step 2 reuses step 1's distances at the end of the step after step 1 has
+  // moved some corners: the distance before, less the farthest a corner of each primitive moved,
+  // bounds the distance after from below. Random pairs in a 3 cm box whose primitives move apart
+  // rigidly by up to 2 cm, after which some of their corners are pulled back part of the way
+  // (what step 1 does to a pair it finds too close), or moved at random.
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> position(-0.015, 0.015), move(-0.02, 0.02), unit(0.0, 1.0);
+  const double distance_m = 0.004;
+  int ruled_out = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const CandidatePair& pair = k % 2 == 0 ? vertex_triangle : edge_edge;
+    const int first_size = pair.first_primitive_size();
+    const std::array<Eigen::Vector3d, 2> apart = {
+        Eigen::Vector3d(move(random), move(random), move(random)),
+        Eigen::Vector3d(move(random), move(random), move(random))};
+    PairMotion m;
+    for (int c = 0; c < 4; ++c) {
+      m.start[c] = {position(random), position(random), position(random)};
+      m.displacement[c] = apart[c < first_size ? 0 : 1];
+    }
+    const double end_distance_m = proximity_at_end(pair, m, distance_m).distance_m;
+    double first_moved_m = 0.0, second_moved_m = 0.0;
+    for (int c = 0; c < 4; ++c) {
+      if (unit(random) < 0.3) continue;  // this corner stays
+      const Eigen::Vector3d d = k % 4 < 2
+                                    ? Eigen::Vector3d(-unit(random) * m.displacement[c])
+                                    : Eigen::Vector3d(move(random), move(random), move(random));
+      m.displacement[c] += d;
+      double& moved_m = c < first_size ? first_moved_m : second_moved_m;
+      moved_m = std::max(moved_m, d.norm());
+    }
+    if (!stays_farther_than(pair, m, distance_m, end_distance_m - first_moved_m - second_moved_m))
+      continue;
+    ++ruled_out;
+    for (int s = 0; s <= 200; ++s) {
+      ASSERT_GT(distance_at(pair, m, s / 200.0), distance_m) << "pair " << k << " t " << s / 200.0;
+    }
+  }
+  EXPECT_GT(ruled_out, 40);
+}
+
 TEST(ProximityAtEnd, FindsPairsWithinTheThicknessOnly) {
   const PairMotion m = vertex_over_triangle({0.2, 0.3, 0.5}, {0.0, 0.0, -0.497});
-  const std::optional<ContactPair> close = proximity_at_end(vertex_triangle, m, 0.004);
-  ASSERT_TRUE(close.has_value());
-  EXPECT_NEAR(close->distance_m, 0.003, 1e-12);
-  EXPECT_TRUE(close->normal.isApprox(Eigen::Vector3d::UnitZ()));
-  EXPECT_FALSE(proximity_at_end(vertex_triangle, m, 0.002));
+  const EndProximity close = proximity_at_end(vertex_triangle, m, 0.004);
+  EXPECT_NEAR(close.distance_m, 0.003, 1e-12);
+  ASSERT_TRUE(close.contact.has_value());
+  EXPECT_NEAR(close.contact->distance_m, 0.003, 1e-12);
+  EXPECT_TRUE(close.contact->normal.isApprox(Eigen::Vector3d::UnitZ()));
+  const EndProximity apart = proximity_at_end(vertex_triangle, m, 0.002);
+  EXPECT_NEAR(apart.distance_m, 0.003, 1e-12);
+  EXPECT_FALSE(apart.contact);
 }
 
 }  // namespace
