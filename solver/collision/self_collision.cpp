@@ -48,21 +48,24 @@ bool within_reach(const CandidatePair& pair, const ParticleBoxes& step, double r
   return (first_low - reach_m <= second_high).all() && (second_low <= first_high + reach_m).all();
 }
 
-/// The candidates whose primitives come within `reach_m` of each other (by their boxes) on the
-/// way from `start_x` to `end_x`, in order.
-std::vector<CandidatePair> pairs_within_reach(const std::vector<CandidatePair>& candidates,
-                                              const Eigen::VectorXd& start_x,
-                                              const Eigen::VectorXd& end_x, double reach_m) {
-  const ParticleBoxes step = ParticleBoxes::swept(start_x, end_x);
-  const int n = static_cast<int>(candidates.size());
-  std::vector<char> kept(n);
-#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
-  for (int i = 0; i < n; ++i) kept[i] = within_reach(candidates[i], step, reach_m);
-  std::vector<CandidatePair> result;
-  for (int i = 0; i < n; ++i) {
-    if (kept[i]) result.push_back(candidates[i]);
+/// The distance between the pair's primitives with each particle at its box, when every box is a
+/// point; else 0, which rules nothing out (m).
+double gap_at_boxes_m(const CandidatePair& pair, const ParticleBoxes& boxes) {
+  PairMotion at_boxes;
+  for (int k = 0; k < 4; ++k) {
+    if (boxes.is_path(pair.particle[k])) return 0.0;
+    at_boxes.start[k] = boxes.low.col(pair.particle[k]);
+    at_boxes.displacement[k].setZero();
   }
-  return result;
+  return proximity_at_end(pair, at_boxes, 0.0).distance_m;
+}
+
+/// Fills cache.gap_m for the pairs found since it was last filled.
+void add_gaps(SelfCollisionCache& cache) {
+  const int first = static_cast<int>(cache.gap_m.size()), n = static_cast<int>(cache.pairs.size());
+  cache.gap_m.resize(n);
+#pragma omp parallel for schedule(static) if (n - first >= min_parallel_items)
+  for (int i = first; i < n; ++i) cache.gap_m[i] = gap_at_boxes_m(cache.pairs[i], cache.boxes);
 }
 
 /// test(pair, motion) for every candidate, in parallel, keeping the contacts in candidate order.
@@ -80,6 +83,24 @@ std::vector<ContactPair> contacts_among(const std::vector<CandidatePair>& candid
     if (c) contacts.push_back(*c);
   }
   return contacts;
+}
+
+/// |x_p - points_p| for each particle p (m): `x` 3#P, `points` 3 x #P.
+Eigen::VectorXd distances_m(const Eigen::VectorXd& x, const Eigen::Matrix3Xd& points) {
+  return (x.reshaped(3, points.cols()) - points).colwise().norm().transpose();
+}
+
+/// How much closer the pair's primitives can have come when each particle p went at most
+/// `went_m[p]` (m): the farthest any corner of the first primitive went plus the farthest any of
+/// the second's, since each primitive's closest point is a convex combination of its corners.
+double closing_bound_m(const CandidatePair& pair, const Eigen::VectorXd& went_m) {
+  const int first_size = pair.first_primitive_size();
+  double first_m = 0.0, second_m = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    double& farthest_m = k < first_size ? first_m : second_m;
+    farthest_m = std::max(farthest_m, went_m[pair.particle[k]]);
+  }
+  return first_m + second_m;
 }
 
 /// Step 1's test: the candidates closer than `thickness_m` at the end of the step, in candidate
@@ -104,9 +125,9 @@ std::vector<ContactPair> proximities(const std::vector<CandidatePair>& candidate
 
 /// The candidates that may touch (within `tolerance_m`) during the step after step 1 moved the
 /// end positions from `before_x` to `end_x`: those first_impact could find crossing. A pair's
-/// distance at the end is at least its distance before (`end_distance_m`) less the farthest a
-/// corner of each primitive moved, since each primitive's closest point is a convex combination
-/// of its corners; conservative advancement (stays_farther_than) rules out the others. On a flat
+/// distance at the end is at least its distance before (`end_distance_m`) less closing_bound_m of
+/// how far step 1 moved each particle; conservative advancement (stays_farther_than) rules out
+/// the others. On a flat
 /// sheet, most candidates are coplanar neighbours a good part of an edge apart: this spares
 /// their closest points a second computation.
 std::vector<CandidatePair> may_still_touch(const std::vector<CandidatePair>& candidates,
@@ -114,22 +135,15 @@ std::vector<CandidatePair> may_still_touch(const std::vector<CandidatePair>& can
                                            const Eigen::VectorXd& before_x,
                                            const Eigen::VectorXd& start_x,
                                            const Eigen::VectorXd& end_x, double tolerance_m) {
-  const Eigen::VectorXd moved_m =
-      (end_x - before_x).reshaped(3, end_x.size() / 3).colwise().norm().transpose();
+  const Eigen::VectorXd moved_m = distances_m(end_x, before_x.reshaped(3, before_x.size() / 3));
   const int n = static_cast<int>(candidates.size());
   std::vector<char> kept(n);
 #pragma omp parallel for schedule(static) if (n >= min_parallel_items)
   for (int i = 0; i < n; ++i) {
     const CandidatePair& pair = candidates[i];
-    const int first_size = pair.first_primitive_size();
-    double first_moved_m = 0.0, second_moved_m = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      double& moved = k < first_size ? first_moved_m : second_moved_m;
-      moved = std::max(moved, moved_m[pair.particle[k]]);
-    }
     // twice the tolerance: the bound must not rule out a pair the exact test, in round-off, keeps
     kept[i] = !stays_farther_than(pair, motion_of(pair, start_x, end_x), 2.0 * tolerance_m,
-                                  end_distance_m[i] - first_moved_m - second_moved_m);
+                                  end_distance_m[i] - closing_bound_m(pair, moved_m));
   }
   std::vector<CandidatePair> result;
   for (int i = 0; i < n; ++i) {
@@ -351,20 +365,19 @@ bool has_flagged(const CandidatePair& pair, const std::vector<char>& flagged) {
   return std::any_of(pair.particle.begin(), pair.particle.end(), [&](int p) { return flagged[p]; });
 }
 
-/// The pairs to test this step. Every pair of primitives whose paths over the step come within the
-/// thickness is among them: a cached pair's particles stay within half the skin of their boxes
-/// (per axis), so their primitives' boxes grow by less than the skin the cache was searched with.
+/// Brings cache.pairs (and their gaps) up to the pairs to test this step. Every pair of primitives
+/// whose paths over the step come within the thickness is among them: a cached pair's particles
+/// stay within half the skin of their boxes (per axis), so their primitives' boxes grow by less
+/// than the skin the cache was searched with.
 /// - No particle left its box: the cached pairs.
 /// - A few left (a sliding hem): their pairs are searched again, with new boxes.
 /// - Many left (a falling cloth): the whole cloth is searched; with new boxes if few particles
 ///   move farther than half the skin in the step, else with the step's paths only, and no cache.
 /// The skin is the option's, at most half the mean edge: the kept pairs grow with the square of
 /// the skin over the edge (a 1 cm skin on 1 cm edges keeps 200 pairs per particle).
-const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
-                                                      const SelfCollisionOptions& o,
-                                                      const Eigen::VectorXd& start_x,
-                                                      const Eigen::VectorXd& end_x,
-                                                      SelfCollisionCache& cache) {
+void update_kept_pairs(const SpringModel& model, const SelfCollisionOptions& o,
+                       const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x,
+                       SelfCollisionCache& cache) {
   if (cache.built_for_model != model.identity) {
     cache.skin_m =
         std::min(o.skin_m, 0.5 * mean_edge_length_m(model, ParticleBoxes::swept(end_x, end_x)));
@@ -381,17 +394,24 @@ const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
                    !within(cache.boxes, p, end_x.segment<3>(3 * p), half_skin_m);
       leaving_count += leaving[p];
     }
-    if (leaving_count == 0) return cache.pairs;
+    if (leaving_count == 0) return;
     if (leaving_count * whole_search_divisor <= particles) {
       for (int p = 0; p < particles; ++p) {
         if (leaving[p]) place(p, start_x, end_x, half_skin_m, cache.boxes);
       }
-      std::erase_if(cache.pairs,
-                    [&](const CandidatePair& pair) { return has_flagged(pair, leaving); });
+      int kept = 0;
+      for (std::size_t i = 0; i < cache.pairs.size(); ++i) {
+        if (has_flagged(cache.pairs[i], leaving)) continue;
+        cache.pairs[kept] = cache.pairs[i];
+        cache.gap_m[kept++] = cache.gap_m[i];
+      }
+      cache.pairs.resize(kept);
+      cache.gap_m.resize(kept);
       const std::vector<CandidatePair> found = collision_candidates_touching(
           model, cache.boxes, cached_margin_m, o.thickness_m, leaving);
       cache.pairs.insert(cache.pairs.end(), found.begin(), found.end());
-      return cache.pairs;
+      add_gaps(cache);
+      return;
     }
   }
   cache.built_for_model = model.identity;
@@ -402,11 +422,13 @@ const std::vector<CandidatePair>& candidates_for_step(const SpringModel& model,
     cache.boxes.high.resize(3, particles);
     for (int p = 0; p < particles; ++p) place(p, start_x, end_x, half_skin_m, cache.boxes);
     cache.pairs = collision_candidates(model, cache.boxes, cached_margin_m, o.thickness_m);
+    cache.gap_m.clear();
+    add_gaps(cache);
   } else {
     cache.boxes = {};
     cache.pairs = collision_candidates(model, start_x, end_x, o.thickness_m, o.thickness_m);
+    cache.gap_m.assign(cache.pairs.size(), 0.0);
   }
-  return cache.pairs;
 }
 
 SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions& options,
@@ -422,10 +444,10 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
     if (!holding_normal.col(p).isZero()) inverse_mass[p] = 0.0;
   }
 
-  // the kept pairs whose primitives come within the thickness in this step
+  // the kept pairs whose primitives may come within the thickness in this step
+  update_kept_pairs(model, options, start_x, state.x, cache);
   const std::vector<CandidatePair> near =
-      pairs_within_reach(candidates_for_step(model, options, start_x, state.x, cache), start_x,
-                         state.x, options.thickness_m);
+      kept_pairs_within_reach(cache, start_x, state.x, options.thickness_m);
   report.candidates = static_cast<int>(near.size());
   std::vector<double> end_distance_m;
   const std::vector<ContactPair> close =
@@ -475,6 +497,33 @@ SelfCollisionReport resolve(const SpringModel& model, const SelfCollisionOptions
 }
 
 }  // namespace
+
+std::vector<CandidatePair> kept_pairs_within_reach(const SelfCollisionCache& cache,
+                                                   const Eigen::VectorXd& start_x,
+                                                   const Eigen::VectorXd& end_x, double reach_m) {
+  const ParticleBoxes step = ParticleBoxes::swept(start_x, end_x);
+  const int particles = step.size();
+  // how far each particle strays from its box's point over the step: the farther of its start
+  // and end, its path being straight (unused where the gap is 0)
+  Eigen::VectorXd stray_m = Eigen::VectorXd::Zero(particles);
+  if (cache.boxes.size() == particles) {
+    stray_m = distances_m(start_x, cache.boxes.low).cwiseMax(distances_m(end_x, cache.boxes.low));
+  }
+  const std::vector<CandidatePair>& candidates = cache.pairs;
+  const int n = static_cast<int>(candidates.size());
+  std::vector<char> kept(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i) {
+    const CandidatePair& pair = candidates[i];
+    kept[i] = !(cache.gap_m[i] - closing_bound_m(pair, stray_m) > reach_m) &&
+              within_reach(pair, step, reach_m);
+  }
+  std::vector<CandidatePair> result;
+  for (int i = 0; i < n; ++i) {
+    if (kept[i]) result.push_back(candidates[i]);
+  }
+  return result;
+}
 
 SelfCollisionReport resolve_self_collisions(const SpringModel& model,
                                             const SelfCollisionOptions& options, double time_step_s,

@@ -33,6 +33,10 @@ struct SelfCollisionOptions {
 struct SelfCollisionCache {
   /// every pair whose boxes, grown by thickness + skin around `boxes`, overlap
   std::vector<CandidatePair> pairs;
+  /// for each pair, the distance between its primitives with their particles at their boxes, when
+  /// all four boxes are points, else 0 (m): while its corners stray from those points by less
+  /// than the gap less the thickness, the pair cannot touch
+  std::vector<double> gap_m;
   /// each particle's box when its pairs were found (m); empty: none. A box that is a step's whole
   /// path rather than a point is searched again at the next step, to shrink back to a point once
   /// its particle slows down.
@@ -41,9 +45,21 @@ struct SelfCollisionCache {
   double skin_m = 0.0;  ///< the skin they were found with: the option's, at most half the mean edge
 };
 
+/// The kept pairs whose primitives may come within `reach_m` of each other on the way from
+/// `start_x` to `end_x` (3#P, m), in order: what a step tests exactly. A pair is ruled out when
+/// - its gap at its particles' boxes, less the farthest a corner of each primitive strays from
+///   its box's point over the step, exceeds the reach: each primitive's closest point is a
+///   convex combination of its corners, and a corner strays farthest at the start or the end of
+///   its straight path. On a flat sheet most kept pairs are coplanar neighbours a good part of an
+///   edge apart, whose boxes overlap all the same; or
+/// - the boxes of its primitives over the step do not come within the reach.
+std::vector<CandidatePair> kept_pairs_within_reach(const SelfCollisionCache& cache,
+                                                   const Eigen::VectorXd& start_x,
+                                                   const Eigen::VectorXd& end_x, double reach_m);
+
 /// What one step's self-collision handling found.
 struct SelfCollisionReport {
-  int candidates = 0;      ///< pairs from the broad phase within the thickness over the step
+  int candidates = 0;      ///< pairs tested exactly: kept_pairs_within_reach of the thickness
   int proximities = 0;     ///< pairs closer than the thickness, pushed apart
   int impacts = 0;         ///< crossings during the step stopped by impulses, over all passes
   int zone_particles = 0;  ///< particles moved rigidly in impact zones

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "solver/collision/collision_pairs.hpp"
+#include "solver/collision/continuous_collision.hpp"
 #include "solver/step.hpp"
 #include "tests/solver/test_models.hpp"
 
@@ -226,6 +227,23 @@ std::set<std::array<int, 5>> pair_set(const std::vector<CandidatePair>& pairs) {
   return keys;
 }
 
+/// The smallest distance between the pair's primitives at 21 instants of the straight paths from
+/// `start_x` to `end_x` (m): at least their closest approach.
+double closest_over_step_m(const CandidatePair& pair, const Eigen::VectorXd& start_x,
+                           const Eigen::VectorXd& end_x) {
+  double closest_m = std::numeric_limits<double>::infinity();
+  for (int s = 0; s <= 20; ++s) {
+    const Eigen::VectorXd x = start_x + (s / 20.0) * (end_x - start_x);
+    PairMotion still;
+    for (int k = 0; k < 4; ++k) {
+      still.start[k] = x.segment<3>(3 * pair.particle[k]);
+      still.displacement[k].setZero();
+    }
+    closest_m = std::min(closest_m, proximity_at_end(pair, still, 0.0).distance_m);
+  }
+  return closest_m;
+}
+
 TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewParticlesRoam) {
   // the upper sheet 6 mm above the lower one; the lower sheet is still, the upper one trembles by
   // up to 1 mm per step, and a few of its particles (a different few each step) jump by up to
@@ -240,7 +258,7 @@ TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewPa
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Eigen::VectorXd x = scene.state.x;
-  int roamers_seen = 0;
+  int roamers_seen = 0, close_pairs_seen = 0;
   Eigen::Vector3d still_box_low;
   const int still = side * side / 2;  // a particle of the lower sheet
   for (int n = 0; n < 40; ++n) {
@@ -258,6 +276,16 @@ TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewPa
          collision_candidates(scene.model, x, end_x, thickness_m, thickness_m)) {
       ASSERT_TRUE(kept.count(pair_key(pair))) << "a pair within reach was not kept, step " << n;
     }
+    // the pairs the step tested exactly hold every pair that came within the thickness
+    const std::set<std::array<int, 5>> tested =
+        pair_set(kept_pairs_within_reach(cache, x, end_x, thickness_m));
+    for (const CandidatePair& pair :
+         collision_candidates(scene.model, x, end_x, thickness_m, thickness_m)) {
+      if (closest_over_step_m(pair, x, end_x) > thickness_m) continue;
+      ++close_pairs_seen;
+      ASSERT_TRUE(tested.count(pair_key(pair)))
+          << "a pair that came close was not tested, step " << n;
+    }
     // the kept pairs are exactly those of a whole search around the particles' boxes
     ASSERT_EQ(cache.boxes.size(), particles);
     EXPECT_EQ(kept, pair_set(collision_candidates(scene.model, cache.boxes,
@@ -268,6 +296,7 @@ TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewPa
     x = end_x;
   }
   EXPECT_GT(roamers_seen, 40) << "no particle left its box: the partial search went untested";
+  EXPECT_GT(close_pairs_seen, 100);
   // a particle that never moved keeps the box it got at the first step: the cloth was never
   // searched whole again
   EXPECT_EQ(cache.boxes.low.col(still), still_box_low);
