@@ -127,9 +127,8 @@ std::vector<ContactPair> proximities(const std::vector<CandidatePair>& candidate
 /// end positions from `before_x` to `end_x`: those first_impact could find crossing. A pair's
 /// distance at the end is at least its distance before (`end_distance_m`) less closing_bound_m of
 /// how far step 1 moved each particle; conservative advancement (stays_farther_than) rules out
-/// the others. On a flat
-/// sheet, most candidates are coplanar neighbours a good part of an edge apart: this spares
-/// their closest points a second computation.
+/// the others. On a flat sheet, most candidates are coplanar neighbours a good part of an edge
+/// apart: this spares their closest points a second computation.
 std::vector<CandidatePair> may_still_touch(const std::vector<CandidatePair>& candidates,
                                            const std::vector<double>& end_distance_m,
                                            const Eigen::VectorXd& before_x,
