@@ -85,6 +85,21 @@ std::vector<ContactPair> contacts_among(const std::vector<CandidatePair>& candid
   return contacts;
 }
 
+/// The candidates for which keep(pair, i) holds (i: the pair's index), in order; evaluated in
+/// parallel.
+template <class Keep>
+std::vector<CandidatePair> pairs_where(const std::vector<CandidatePair>& candidates, Keep&& keep) {
+  const int n = static_cast<int>(candidates.size());
+  std::vector<char> kept(n);
+#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
+  for (int i = 0; i < n; ++i) kept[i] = keep(candidates[i], i);
+  std::vector<CandidatePair> result;
+  for (int i = 0; i < n; ++i) {
+    if (kept[i]) result.push_back(candidates[i]);
+  }
+  return result;
+}
+
 /// |x_p - points_p| for each particle p (m): `x` 3#P, `points` 3 x #P.
 Eigen::VectorXd distances_m(const Eigen::VectorXd& x, const Eigen::Matrix3Xd& points) {
   return (x.reshaped(3, points.cols()) - points).colwise().norm().transpose();
@@ -135,20 +150,11 @@ std::vector<CandidatePair> may_still_touch(const std::vector<CandidatePair>& can
                                            const Eigen::VectorXd& start_x,
                                            const Eigen::VectorXd& end_x, double tolerance_m) {
   const Eigen::VectorXd moved_m = distances_m(end_x, before_x.reshaped(3, before_x.size() / 3));
-  const int n = static_cast<int>(candidates.size());
-  std::vector<char> kept(n);
-#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
-  for (int i = 0; i < n; ++i) {
-    const CandidatePair& pair = candidates[i];
+  return pairs_where(candidates, [&](const CandidatePair& pair, int i) {
     // twice the tolerance: the bound must not rule out a pair the exact test, in round-off, keeps
-    kept[i] = !stays_farther_than(pair, motion_of(pair, start_x, end_x), 2.0 * tolerance_m,
-                                  end_distance_m[i] - closing_bound_m(pair, moved_m));
-  }
-  std::vector<CandidatePair> result;
-  for (int i = 0; i < n; ++i) {
-    if (kept[i]) result.push_back(candidates[i]);
-  }
-  return result;
+    return !stays_farther_than(pair, motion_of(pair, start_x, end_x), 2.0 * tolerance_m,
+                               end_distance_m[i] - closing_bound_m(pair, moved_m));
+  });
 }
 
 /// Per-particle changes summed over pairs, then averaged over the pairs of each particle.
@@ -508,20 +514,10 @@ std::vector<CandidatePair> kept_pairs_within_reach(const SelfCollisionCache& cac
   if (cache.boxes.size() == particles) {
     stray_m = distances_m(start_x, cache.boxes.low).cwiseMax(distances_m(end_x, cache.boxes.low));
   }
-  const std::vector<CandidatePair>& candidates = cache.pairs;
-  const int n = static_cast<int>(candidates.size());
-  std::vector<char> kept(n);
-#pragma omp parallel for schedule(static) if (n >= min_parallel_items)
-  for (int i = 0; i < n; ++i) {
-    const CandidatePair& pair = candidates[i];
-    kept[i] = !(cache.gap_m[i] - closing_bound_m(pair, stray_m) > reach_m) &&
-              within_reach(pair, step, reach_m);
-  }
-  std::vector<CandidatePair> result;
-  for (int i = 0; i < n; ++i) {
-    if (kept[i]) result.push_back(candidates[i]);
-  }
-  return result;
+  return pairs_where(cache.pairs, [&](const CandidatePair& pair, int i) {
+    return !(cache.gap_m[i] - closing_bound_m(pair, stray_m) > reach_m) &&
+           within_reach(pair, step, reach_m);
+  });
 }
 
 SelfCollisionReport resolve_self_collisions(const SpringModel& model,
