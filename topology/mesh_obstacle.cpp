@@ -125,6 +125,16 @@ class MeshSurface final : public SurfaceQuery {
   }
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
+    SurfaceDistance result = nearest(x_m);
+    if (result.distance_m > 0.0 && m_winding && m_winding->winding_number(x_m) > 0.5) {
+      result.distance_m = -result.distance_m;  // inside
+      result.normal = -result.normal;
+    }
+    return result;
+  }
+
+  /// Unsigned: the distance and the direction from the nearest point to x_m.
+  SurfaceDistance nearest(const Eigen::Vector3d& x_m) const override {
     const auto [closest, triangle] = m_tree.closest_point_and_primitive(to_point(x_m));
     const int index = static_cast<int>(triangle - m_triangles.cbegin());
     const Eigen::Vector3d nearest = to_eigen(closest);
@@ -135,11 +145,7 @@ class MeshSurface final : public SurfaceQuery {
     const Eigen::Vector3d offset = x_m - nearest;
     const double gap_m = offset.norm();
     if (!(gap_m > 1e-12)) return {0.0, (b - a).cross(c - a).normalized(), index, barycentric};
-    const Eigen::Vector3d away = offset / gap_m;
-    if (m_winding && m_winding->winding_number(x_m) > 0.5) {
-      return {-gap_m, -away, index, barycentric};  // inside
-    }
-    return {gap_m, away, index, barycentric};
+    return {gap_m, offset / gap_m, index, barycentric};
   }
 
   const std::vector<Eigen::Vector3d>& triangle_corners() const override { return m_corners; }

@@ -94,7 +94,7 @@ Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlace
                                    const ObstaclePlacement& after, const Eigen::Vector3d& x) {
   Eigen::Vector3d local = before.pose.apply_inverse(x);         // in the obstacle's own frame
   if (obstacle.animation && before.surface != after.surface) {  // else its shape held still
-    const SurfaceDistance nearest = before.surface->distance(local);
+    const SurfaceDistance nearest = before.surface->nearest(local);
     if (nearest.triangle >= 0) {
       local += point_on(*after.surface, nearest.triangle, nearest.barycentric) -
                point_on(*before.surface, nearest.triangle, nearest.barycentric);

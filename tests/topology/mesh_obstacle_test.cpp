@@ -117,6 +117,13 @@ void expect_signed_distances(const IndexedMesh& mesh, const Eigen::AlignedBox3d&
         // the normal leads from x to the surface inside, from the surface to x outside
         const Eigen::Vector3d nearest = x - d.distance_m * d.normal;
         ASSERT_NEAR(unsigned_distance_m(mesh, nearest), 0.0, 1e-12) << "at " << x.transpose();
+        // the nearest point alone: the same point, unsigned, the normal from it to x
+        const SurfaceDistance n = surface->nearest(x);
+        ASSERT_EQ(n.triangle, d.triangle) << "at " << x.transpose();
+        ASSERT_EQ(n.barycentric, d.barycentric) << "at " << x.transpose();
+        ASSERT_EQ(n.distance_m, std::abs(d.distance_m)) << "at " << x.transpose();
+        ASSERT_EQ(n.normal, d.distance_m < 0.0 ? Eigen::Vector3d(-d.normal) : d.normal)
+            << "at " << x.transpose();
         ++checked;
       }
     }
