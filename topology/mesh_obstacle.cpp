@@ -119,6 +119,7 @@ class MeshSurface final : public SurfaceQuery {
       m_triangles.emplace_back(to_point(vertices[t[0]]), to_point(vertices[t[1]]),
                                to_point(vertices[t[2]]));
     }
+    for (const Eigen::Vector3d& corner : m_corners) m_box.extend(corner);
     if (closed) m_winding.emplace(m_corners);
     m_tree.insert(m_triangles.begin(), m_triangles.end());
     m_tree.accelerate_distance_queries();
@@ -148,10 +149,15 @@ class MeshSurface final : public SurfaceQuery {
     return {gap_m, offset / gap_m, index, barycentric};
   }
 
+  double distance_at_least_m(const Eigen::Vector3d& x_m) const override {
+    return std::max(0.0, m_box.exteriorDistance(x_m) - 1e-9);
+  }
+
   const std::vector<Eigen::Vector3d>& triangle_corners() const override { return m_corners; }
 
  private:
-  Triangles m_triangles;  // the tree points into it: filled before the tree, never changed
+  Eigen::AlignedBox3d m_box;  // of every corner
+  Triangles m_triangles;      // the tree points into it: filled before the tree, never changed
   std::vector<Eigen::Vector3d> m_corners;
   std::optional<WindingNumberTree> m_winding;  // closed meshes only
   Tree m_tree;

@@ -38,8 +38,10 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
       // the plane would throw it where it never was. The projection after the step keeps it out,
       // as it does without the penalty. (A particle sliding on a ball starts a little below the
       // tangent plane ahead of it, by (R + t)(1 - cos) of the angle it slides.)
+      const double plane_reach_m = 2.0 * obstacle.thickness_m + travel_m;
+      if (!(surface_distance_at_least_m(obstacle, after[k], x0) < plane_reach_m)) continue;
       const SurfaceDistance at_x0 = surface_distance(obstacle, after[k], x0);
-      if (!(at_x0.distance_m < 2.0 * obstacle.thickness_m + travel_m)) continue;
+      if (!(at_x0.distance_m < plane_reach_m)) continue;
       const Eigen::Vector3d from = obstacle.motion.moves() || obstacle.animation
                                        ? carry_with_surface(obstacle, before[k], after[k], start)
                                        : start;

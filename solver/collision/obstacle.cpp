@@ -90,6 +90,16 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlaceme
   return at_rest;
 }
 
+double surface_distance_at_least_m(const Obstacle& obstacle, const ObstaclePlacement& placement,
+                                   const Eigen::Vector3d& x) {
+  if (obstacle.shape != ObstacleShape::mesh) return 0.0;
+  const RigidPose& pose = placement.pose;
+  // in the mesh's own frame, as surface_distance() measures it
+  return placement.surface->distance_at_least_m(pose.rotation == Eigen::Matrix3d::Identity()
+                                                    ? Eigen::Vector3d(x - pose.translation_m)
+                                                    : pose.apply_inverse(x));
+}
+
 Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlacement& before,
                                    const ObstaclePlacement& after, const Eigen::Vector3d& x) {
   Eigen::Vector3d local = before.pose.apply_inverse(x);         // in the obstacle's own frame

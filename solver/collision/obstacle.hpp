@@ -32,6 +32,9 @@ class SurfaceQuery {
   /// spares a closed mesh its winding number (about a fifth of a query); the triangle and the
   /// barycentric coordinates are distance()'s.
   virtual SurfaceDistance nearest(const Eigen::Vector3d& x_m) const { return distance(x_m); }
+  /// A lower bound on |distance(x_m)| (m) that costs next to nothing: 0 unless a surface knows
+  /// better (a mesh: the distance to its bounding box, less a nanometre for round-off).
+  virtual double distance_at_least_m(const Eigen::Vector3d& /*x_m*/) const { return 0.0; }
   /// Its triangles' corners, three per triangle (m), for drawing.
   virtual const std::vector<Eigen::Vector3d>& triangle_corners() const = 0;
 };
@@ -98,6 +101,12 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const Eigen::Vector3d
 /// The same with the obstacle where `placement` puts it.
 SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlacement& placement,
                                  const Eigen::Vector3d& x);
+
+/// A lower bound on |surface_distance(obstacle, placement, x)| (m), for skipping a mesh's queries
+/// where the answer is known to be "far": a garment's particles are mostly away from a body's
+/// arms, whose parts are separate obstacles. 0 for the analytic shapes, which are cheap to query.
+double surface_distance_at_least_m(const Obstacle& obstacle, const ObstaclePlacement& placement,
+                                   const Eigen::Vector3d& x);
 
 /// Where the point at `x` (m) when `obstacle` is at `before` would be when it is at `after`, had it
 /// moved with the obstacle's surface: its rigid motion carries it, and an animated mesh's nearest

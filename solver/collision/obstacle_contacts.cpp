@@ -61,16 +61,19 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
                                        const Eigen::Vector3d& start, double step_normal_impulse,
                                        Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
-  SurfaceDistance surface = surface_distance(obstacle, after, x);
   // A signed distance changes by at most the distance moved (it is 1-Lipschitz: its sign flips on
   // the surface only), so a path shorter than the end's clearance never came within the thickness:
-  // first against a bound on the path's length, then against the path itself.
-  const double end_clearance_m = surface.distance_m - obstacle.thickness_m;
+  // first against a bound on the path's length (with a bound on the clearance, then the
+  // clearance), then against the path itself.
   const bool moves = obstacle.motion.moves() || obstacle.animation;
-  if (moves &&
-      end_clearance_m > (x - start).norm() + carry_bound_m(obstacle, before, after, h, start)) {
+  const double path_bound_m =
+      (x - start).norm() + (moves ? carry_bound_m(obstacle, before, after, h, start) : 0.0);
+  if (surface_distance_at_least_m(obstacle, after, x) - obstacle.thickness_m > path_bound_m) {
     return std::nullopt;
   }
+  SurfaceDistance surface = surface_distance(obstacle, after, x);
+  const double end_clearance_m = surface.distance_m - obstacle.thickness_m;
+  if (moves && end_clearance_m > path_bound_m) return std::nullopt;
   const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
   if (end_clearance_m > (x - from).norm()) return std::nullopt;
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
@@ -150,6 +153,7 @@ int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacement
   // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
   // more than a thickness, is left where the last one put it (a hand holding cloth).
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    if (surface_distance_at_least_m(obstacles[k], after[k], x) > 0.0) continue;  // outside
     const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
     if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
     x = carry_with_surface(obstacles[k], before[k], after[k], start);
@@ -195,7 +199,8 @@ void resolve_obstacle_contacts_of(const std::vector<int>& moved,
     const Eigen::Vector3d x = state.x.segment<3>(3 * p);
     bool inside = false;
     for (std::size_t o = 0; o < obstacles.size() && !inside; ++o) {
-      inside = surface_distance(obstacles[o], placements.after[o], x).distance_m < 0.0;
+      inside = !(surface_distance_at_least_m(obstacles[o], placements.after[o], x) > 0.0) &&
+               surface_distance(obstacles[o], placements.after[o], x).distance_m < 0.0;
     }
     if (!inside) continue;  // within an obstacle's thickness at most: left to the cloth's layers
     Eigen::Vector3d unused_normal;

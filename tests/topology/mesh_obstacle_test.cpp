@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <limits>
+#include <random>
 
 #include "solver/collision/primitive_distance.hpp"
 #include "solver/step.hpp"
@@ -103,7 +104,9 @@ void expect_signed_distances(const IndexedMesh& mesh, const Eigen::AlignedBox3d&
                              Inside inside) {
   const auto surface = make_mesh_surface(mesh);
   constexpr int n = 13;
-  int checked = 0;
+  int checked = 0, ruled_out = 0, beyond_box = 0;
+  Eigen::AlignedBox3d mesh_box;
+  for (const Eigen::Vector3d& v : mesh.vertices) mesh_box.extend(v);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       for (int k = 0; k < n; ++k) {
@@ -124,11 +127,17 @@ void expect_signed_distances(const IndexedMesh& mesh, const Eigen::AlignedBox3d&
         ASSERT_EQ(n.distance_m, std::abs(d.distance_m)) << "at " << x.transpose();
         ASSERT_EQ(n.normal, d.distance_m < 0.0 ? Eigen::Vector3d(-d.normal) : d.normal)
             << "at " << x.transpose();
+        // the cheap bound never exceeds the distance, and rules out what lies beyond the box
+        const double at_least_m = surface->distance_at_least_m(x);
+        ASSERT_LE(at_least_m, gap_m) << "at " << x.transpose();
+        ruled_out += at_least_m > 0.0;
+        beyond_box += !mesh_box.contains(x);
         ++checked;
       }
     }
   }
   EXPECT_GT(checked, n * n * n / 2);
+  EXPECT_EQ(ruled_out, beyond_box);
 }
 
 void expect_surface(const SurfaceQuery& s, const Eigen::Vector3d& x, double distance_m,
@@ -325,6 +334,29 @@ TEST(MeshSurface, ARotatingMeshTurnsItsDistanceField) {
   // a point that was 0.2 m outside a face is inside the turned cube, 1 - 1.2 / sqrt(2) deep
   EXPECT_NEAR(surface_distance(block, {1.2, 0.0, 0.0}, 1.0).distance_m, 1.2 / std::sqrt(2.0) - 1.0,
               1e-12);
+}
+
+TEST(MeshSurface, TheCheapBoundOnAMovedMeshsDistanceHoldsWhereverItIs) {
+  // the cube turned and carried: the bound is taken in the mesh's own frame, as the distance
+  Obstacle block;
+  block.shape = ObstacleShape::mesh;
+  block.surface = make_mesh_surface(cube());
+  block.motion.keys = {{0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()},
+                       {1.0, Eigen::Vector3d(3.0, -1.0, 0.5), Eigen::Vector3d(0.3, 0.0, M_PI / 4)}};
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-4.0, 6.0);
+  int ruled_out = 0;
+  for (double time_s : {0.0, 0.4, 1.0}) {
+    const ObstaclePlacement placement = place(block, time_s);
+    for (int k = 0; k < 500; ++k) {
+      const Eigen::Vector3d x(coordinate(random), coordinate(random), coordinate(random));
+      const double at_least_m = surface_distance_at_least_m(block, placement, x);
+      ASSERT_LE(at_least_m, std::abs(surface_distance(block, placement, x).distance_m))
+          << "at " << x.transpose() << ", t = " << time_s << " s";
+      ruled_out += at_least_m > 0.0;
+    }
+  }
+  EXPECT_GT(ruled_out, 1000);  // most of the points lie beyond the 2 m cube's box
 }
 
 }  // namespace
