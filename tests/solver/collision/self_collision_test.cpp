@@ -244,16 +244,28 @@ double closest_over_step_m(const CandidatePair& pair, const Eigen::VectorXd& sta
   return closest_m;
 }
 
+/// The stacked sheets with the upper one 6 mm above the lower one: within reach of each other.
+StackedSheets sheets_6_mm_apart() {
+  StackedSheets scene;
+  for (int p = side * side; p < scene.model.particle_count(); ++p)
+    scene.state.x[3 * p + 2] -= 0.044;
+  return scene;
+}
+
+SelfCollisionOptions self_collision_on() {
+  SelfCollisionOptions options;
+  options.enabled = true;
+  options.thickness_m = thickness_m;
+  return options;
+}
+
 TEST(SelfCollision, KeptPairsHoldEveryPairThatComesWithinTheThicknessWhileAFewParticlesRoam) {
   // the upper sheet 6 mm above the lower one; the lower sheet is still, the upper one trembles by
   // up to 1 mm per step, and a few of its particles (a different few each step) jump by up to
   // 3 cm: their pairs are found again, the others kept
-  StackedSheets scene;
+  const StackedSheets scene = sheets_6_mm_apart();
   const int particles = scene.model.particle_count();
-  for (int p = side * side; p < particles; ++p) scene.state.x[3 * p + 2] -= 0.044;
-  SelfCollisionOptions options;
-  options.enabled = true;
-  options.thickness_m = thickness_m;
+  const SelfCollisionOptions options = self_collision_on();
   SelfCollisionCache cache;
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -311,12 +323,9 @@ TEST(SelfCollision, ACarriedClothMeetsTheSameContactsAndKeepsItsPairs) {
   // so that its particles come within the thickness and some cross; once still, once with the
   // whole scene carried 5.4 cm per step (3.2 m/s at 60 steps per second), farther than half the
   // skin: a fixed frame would search the whole cloth over its paths every step
-  StackedSheets scene;
+  const StackedSheets scene = sheets_6_mm_apart();
   const int particles = scene.model.particle_count();
-  for (int p = side * side; p < particles; ++p) scene.state.x[3 * p + 2] -= 0.044;
-  SelfCollisionOptions options;
-  options.enabled = true;
-  options.thickness_m = thickness_m;
+  const SelfCollisionOptions options = self_collision_on();
   const Eigen::Vector3d carried_m(0.03, -0.02, -0.04);  // per step
   const double h = 1.0 / 60.0;
   std::array<SelfCollisionCache, 2> cache;
