@@ -122,9 +122,7 @@ void BM_SelfCollisionStep(benchmark::State& state) {
   }
   const Eigen::Vector3d fall_m(0.0, 0.0, -0.02);  // per step
   const auto falling_x = [&](int step) {
-    Eigen::VectorXd x = cloth.state.x + ends[step % ends.size()];
-    x.reshaped(3, x.size() / 3).colwise() += step * fall_m;
-    return x;
+    return relative_to(cloth.state.x + ends[step % ends.size()], -step * fall_m);
   };
   State moved = cloth.state;
   int steps = 0;

@@ -93,11 +93,9 @@ SurfaceDistance surface_distance(const Obstacle& obstacle, const ObstaclePlaceme
 double surface_distance_at_least_m(const Obstacle& obstacle, const ObstaclePlacement& placement,
                                    const Eigen::Vector3d& x) {
   if (obstacle.shape != ObstacleShape::mesh) return 0.0;
-  const RigidPose& pose = placement.pose;
-  // in the mesh's own frame, as surface_distance() measures it
-  return placement.surface->distance_at_least_m(pose.rotation == Eigen::Matrix3d::Identity()
-                                                    ? Eigen::Vector3d(x - pose.translation_m)
-                                                    : pose.apply_inverse(x));
+  // in the mesh's own frame, where surface_distance() measures it (to round-off, which the bound's
+  // nanometre covers)
+  return placement.surface->distance_at_least_m(placement.pose.apply_inverse(x));
 }
 
 Eigen::Vector3d carry_with_surface(const Obstacle& obstacle, const ObstaclePlacement& before,

@@ -52,11 +52,12 @@ struct SelfCollisionCache {
 };
 
 /// The frame's step from `start_x` to `end_x` (3#P, m): per axis, the median of the particles'
-/// steps (of up to 1,024 of them), when one of them exceeds `least_m`, else none (m). A cloth falling or carried at 1 m/s
-/// moves about 3 cm per step at 30 steps per second, farther than half the skin: in a fixed frame
-/// every particle would leave its box and the whole cloth be searched again over its paths each
-/// step. Below `least_m` (half the skin) the frame stands still: the particles of a cloth pulled
-/// apart, or settling, would otherwise leave their boxes as the median wanders.
+/// steps (of up to 1,024 of them), when one of them exceeds `least_m`, else none (m). A cloth
+/// falling or carried at 1 m/s moves about 3 cm per step at 30 steps per second, farther than half
+/// the skin: in a fixed frame every particle would leave its box and the whole cloth be searched
+/// again over its paths each step. Below `least_m` (half the skin) the frame stands still: the
+/// particles of a cloth pulled apart, or settling, would otherwise leave their boxes as the median
+/// wanders.
 Eigen::Vector3d frame_step_m(const Eigen::VectorXd& start_x, const Eigen::VectorXd& end_x,
                              double least_m);
 
