@@ -1,6 +1,7 @@
-// Mesh obstacle queries: signed distance of points near a closed triangle mesh, and what the
-// winding-number inside test adds to the AABB tree's closest-point query; and the cost of an
-// animated mesh's surface at a new instant (what each step of a moving body pays).
+// Mesh obstacle queries: signed distance of points near a closed triangle mesh (the AABB tree's
+// closest point, the sign by a ray's crossings), the hierarchical winding number that the sign
+// falls back to; and the cost of an animated mesh's surface at a new instant (what each step of
+// a moving body pays).
 //
 //   ./build/release/bench/obstacle_bench --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true   (one command line)
@@ -58,7 +59,7 @@ std::vector<Eigen::Vector3d> near_surface_points(int count) {
   return points;
 }
 
-/// Signed distance through make_mesh_surface (AABB tree closest point, winding number sign).
+/// Signed distance through make_mesh_surface (AABB tree closest point, sign by crossings).
 void SignedDistance(benchmark::State& state) {
   const IndexedMesh mesh = sphere(static_cast<int>(state.range(0)));
   const auto surface = make_mesh_surface(mesh);
@@ -73,7 +74,8 @@ void SignedDistance(benchmark::State& state) {
 }
 BENCHMARK(SignedDistance)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
 
-/// The winding number alone, hierarchically.
+/// The winding number alone, hierarchically (the sign's fallback; the sign itself until
+/// 2026-12-06).
 void WindingNumber(benchmark::State& state) {
   const IndexedMesh mesh = sphere(static_cast<int>(state.range(0)));
   std::vector<Eigen::Vector3d> corners;
@@ -93,7 +95,7 @@ void WindingNumber(benchmark::State& state) {
 BENCHMARK(WindingNumber)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
 
 /// An animated sphere's surface at a new instant each iteration: its vertices interpolated, its
-/// AABB tree and winding-number tree built.
+/// AABB tree built.
 void AnimatedSurfaceAtANewInstant(benchmark::State& state) {
   const IndexedMesh mesh = sphere(static_cast<int>(state.range(0)));
   std::vector<Eigen::Vector3d> moved = mesh.vertices;

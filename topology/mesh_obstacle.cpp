@@ -4,11 +4,14 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <numeric>
@@ -120,14 +123,14 @@ class MeshSurface final : public SurfaceQuery {
                                to_point(vertices[t[2]]));
     }
     for (const Eigen::Vector3d& corner : m_corners) m_box.extend(corner);
-    if (closed) m_winding.emplace(m_corners);
+    m_closed = closed;
     m_tree.insert(m_triangles.begin(), m_triangles.end());
     m_tree.accelerate_distance_queries();
   }
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
     SurfaceDistance result = nearest(x_m);
-    if (result.distance_m > 0.0 && m_winding && m_winding->winding_number(x_m) > 0.5) {
+    if (result.distance_m > 0.0 && m_closed && winding_number(x_m) > 0.5) {
       result.distance_m = -result.distance_m;  // inside
       result.normal = -result.normal;
     }
@@ -156,11 +159,67 @@ class MeshSurface final : public SurfaceQuery {
   const std::vector<Eigen::Vector3d>& triangle_corners() const override { return m_corners; }
 
  private:
+  /// The winding number of a closed mesh at x_m: its crossings() along the shortest of the rays
+  /// out of the box that meets no edge or vertex, else (possible, but rare) hierarchically.
+  double winding_number(const Eigen::Vector3d& x_m) const {
+    if (m_box.exteriorDistance(x_m) > 0.0) return 0.0;  // no ray from outside the box crosses
+    const std::array<Eigen::Vector3d, 6>& directions = winding_ray_directions();
+    std::array<std::pair<double, int>, 6> exits;  // (segment's length in directions, direction)
+    for (int k = 0; k < 6; ++k) exits[k] = {exit_length(x_m, directions[k]), k};
+    std::sort(exits.begin(), exits.end());
+    for (const auto& [length, k] : exits) {
+      if (const std::optional<int> w = crossings(x_m, length * directions[k])) return *w;
+    }
+    std::call_once(m_winding_built, [this] { m_winding.emplace(m_corners); });
+    return m_winding->winding_number(x_m);
+  }
+
+  /// How many times `direction` takes x_m (inside the box) out of the box, rounded up to a power
+  /// of two (with the directions' few bits, the segment's end is then exact for points of few
+  /// bits: a test can aim it at a vertex).
+  double exit_length(const Eigen::Vector3d& x_m, const Eigen::Vector3d& direction) const {
+    double exit = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+      const double bound = direction[axis] > 0.0 ? m_box.max()[axis] : m_box.min()[axis];
+      exit = std::min(exit, (bound - x_m[axis]) / direction[axis]);
+    }
+    return std::exp2(std::ceil(std::log2(exit + 1e-6 * m_box.diagonal().norm() + 1e-12)));
+  }
+
+  /// The winding number of a closed surface at x_m as the signed count of its crossings by the
+  /// segment from x_m to x_m + `ray` (outside the box): +1 where it leaves
+  /// through a face's front, -1 where it enters (for a closed, boundary-free chain, the integer the
+  /// solid angles sum to). Decided by CGAL's exact predicates: nothing when the segment passes
+  /// through an edge or a vertex, or starts in a face's plane, where a crossing could count twice
+  /// or not at all.
+  std::optional<int> crossings(const Eigen::Vector3d& x_m, const Eigen::Vector3d& ray) const {
+    const Kernel::Point_3 from = to_point(x_m);
+    const Kernel::Point_3 to = to_point(x_m + ray);
+    const auto orientation = Kernel().orientation_3_object();
+    int winding = 0;
+    bool degenerate = false;
+    const auto count = [&](Triangles::const_iterator hit) {
+      const Kernel::Triangle_3& t = *hit;
+      const CGAL::Orientation side = orientation(t[0], t[1], t[2], from);
+      degenerate |= side == CGAL::COPLANAR;
+      for (int k = 0; k < 3; ++k) {
+        degenerate |= orientation(from, to, t[k], t[(k + 1) % 3]) == CGAL::COPLANAR;
+      }
+      winding += side == CGAL::NEGATIVE ? 1 : -1;  // from behind the face: leaving by its front
+    };
+    const Kernel::Segment_3 segment(from, to);
+    m_tree.all_intersected_primitives(segment, boost::make_function_output_iterator(count));
+    if (degenerate) return std::nullopt;
+    return winding;
+  }
+
   Eigen::AlignedBox3d m_box;  // of every corner
   Triangles m_triangles;      // the tree points into it: filled before the tree, never changed
   std::vector<Eigen::Vector3d> m_corners;
-  std::optional<WindingNumberTree> m_winding;  // closed meshes only
+  bool m_closed = false;
   Tree m_tree;
+  mutable std::once_flag m_winding_built;  // the fallback's tree, built when first needed
+  mutable std::optional<WindingNumberTree> m_winding;
 };
 
 /// Checks `samples` against `vertex_count` vertices and `triangles`, as make_mesh_animation says.
@@ -282,6 +341,14 @@ class MeshAnimation final : public SurfaceAnimation {
 };
 
 }  // namespace
+
+const std::array<Eigen::Vector3d, 6>& winding_ray_directions() {
+  static const std::array<Eigen::Vector3d, 6> directions{
+      Eigen::Vector3d(1.0, 0.0625, -0.03125),  Eigen::Vector3d(-1.0, -0.046875, 0.0625),
+      Eigen::Vector3d(0.03125, 1.0, 0.078125), Eigen::Vector3d(-0.078125, -1.0, -0.03125),
+      Eigen::Vector3d(0.046875, 0.0625, 1.0),  Eigen::Vector3d(-0.0625, 0.03125, -1.0)};
+  return directions;
+}
 
 std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
                                                       ObstacleMeshReport* report) {

@@ -6,7 +6,9 @@
 /// w(x) = 1/(4 pi) sum_t Omega_t(x), Omega_t the signed solid angle triangle t subtends at x. For
 /// a closed, outward-facing surface w is 1 inside and 0 outside; where closed parts overlap it
 /// counts them (2 inside two parts), and it stays defined on soups: duplicate-free faces, several
-/// parts, touching or non-manifold edges. "Inside" is w > 1/2.
+/// parts, touching or non-manifold edges. "Inside" is w > 1/2. A closed obstacle mesh counts a
+/// ray's crossings instead, which is cheaper (mesh_obstacle.hpp); this tree is where that count
+/// falls back to when every ray it tries runs through an edge or a vertex.
 
 #include <Eigen/Core>
 #include <vector>

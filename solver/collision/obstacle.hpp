@@ -29,7 +29,7 @@ class SurfaceQuery {
   /// Signed distance from x (m) to the surface (negative inside a closed one) and its normal.
   virtual SurfaceDistance distance(const Eigen::Vector3d& x_m) const = 0;
   /// The nearest point alone: distance() with its sign (and the normal's) left unsettled, which
-  /// spares a closed mesh its winding number (about a fifth of a query); the triangle and the
+  /// spares a closed mesh its inside test (a ray's crossings); the triangle and the
   /// barycentric coordinates are distance()'s.
   virtual SurfaceDistance nearest(const Eigen::Vector3d& x_m) const { return distance(x_m); }
   /// A lower bound on |distance(x_m)| (m) that costs next to nothing: 0 unless a surface knows

@@ -13,6 +13,7 @@
 #include "solver/step.hpp"
 #include "tests/solver/test_models.hpp"
 #include "tests/test_meshes.hpp"
+#include "topology/winding_number.hpp"
 
 namespace tissu {
 namespace {
@@ -192,9 +193,10 @@ TEST(MeshSurface, SignsDistancesRightAroundAConcaveNotch) {
                           inside_notched_block);
 }
 
-TEST(MeshSurface, AcceptsASoupOfPartsThatTouchAndOverlap) {
-  // three cubes: two overlapping, and one touching the first along an edge only, which four
-  // faces then share (a non-manifold edge); the first cube's faces are all listed twice
+/// Three cubes: two overlapping, and one touching the first along an edge only, which four faces
+/// then share (a non-manifold edge); the first cube's faces are all listed twice, and one face is
+/// degenerate.
+IndexedMesh cube_soup() {
   IndexedMesh soup = cube();
   const auto append = [&soup](const IndexedMesh& part) {
     const int offset = static_cast<int>(soup.vertices.size());
@@ -218,7 +220,11 @@ TEST(MeshSurface, AcceptsASoupOfPartsThatTouchAndOverlap) {
   const std::vector<std::vector<int>> first_cube(soup.faces.begin(), soup.faces.begin() + 12);
   soup.faces.insert(soup.faces.end(), first_cube.begin(), first_cube.end());
   soup.faces.push_back({2, 3, 3});  // and one degenerate face
+  return soup;
+}
 
+TEST(MeshSurface, AcceptsASoupOfPartsThatTouchAndOverlap) {
+  const IndexedMesh soup = cube_soup();
   ObstacleMeshReport report;
   const auto s = make_mesh_surface(soup, &report);
   EXPECT_TRUE(report.closed);
@@ -231,6 +237,84 @@ TEST(MeshSurface, AcceptsASoupOfPartsThatTouchAndOverlap) {
   EXPECT_NEAR(s->distance({1.8, 1.9, 0.0}).distance_m, -0.8, 1e-12);  // inside the third
   EXPECT_NEAR(s->distance({0.5, 1.5, 0.0}).distance_m, 0.5, 1e-12);   // in the notch between
   EXPECT_NEAR(s->distance({-1.5, 0.0, 0.0}).distance_m, 0.5, 1e-12);  // outside
+}
+
+TEST(MeshSurface, SignsAsTheSolidAnglesDoWhereClosedPartsOverlap) {
+  // inside is where the winding number exceeds 1/2, whichever way it is counted: 2 where the
+  // first two cubes overlap
+  const IndexedMesh soup = cube_soup();
+  const auto surface = make_mesh_surface(soup);
+  std::vector<Eigen::Vector3d> corners;
+  for (const std::vector<int>& f : soup.faces) {
+    if (f[1] == f[2]) continue;  // the degenerate face subtends nothing
+    for (int v : f) corners.push_back(soup.vertices[v]);
+  }
+  const WindingNumberTree solid_angles(corners);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-1.5, 3.5);
+  int inside = 0, twice = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Eigen::Vector3d x(coordinate(random), coordinate(random), 0.9 * coordinate(random) - 1);
+    const double w = solid_angles.exact_winding_number(x);
+    ASSERT_EQ(surface->distance(x).distance_m<0.0, w> 0.5) << "at " << x.transpose();
+    inside += w > 0.5;
+    twice += w > 1.5;
+  }
+  EXPECT_GT(inside, 400);
+  EXPECT_GT(twice, 100);
+}
+
+/// The closed box [lo, hi], each face a fan of four triangles around a point of it: `points`
+/// where given (one per face at most, in the face's plane), else the face's centre.
+IndexedMesh fanned_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                       const std::vector<Eigen::Vector3d>& points) {
+  IndexedMesh m;
+  for (int i = 0; i < 8; ++i) {
+    m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(),
+                            i & 4 ? hi.z() : lo.z());
+  }
+  // faces -x, +x, -y, +y, -z, +z, corners counter-clockwise seen from outside
+  const int rings[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (int face = 0; face < 6; ++face) {
+    const int axis = face / 2;
+    const double plane = face % 2 ? hi[axis] : lo[axis];
+    Eigen::Vector3d centre = 0.5 * (lo + hi);
+    centre[axis] = plane;
+    for (const Eigen::Vector3d& p : points) {
+      if (p[axis] == plane) centre = p;
+    }
+    const int c = static_cast<int>(m.vertices.size());
+    m.vertices.push_back(centre);
+    for (int k = 0; k < 4; ++k) m.faces.push_back({c, rings[face][k], rings[face][(k + 1) % 4]});
+  }
+  return m;
+}
+
+TEST(MeshSurface, SignsAPointWhoseRaysRunThroughVertices) {
+  // A ray through a vertex crosses every face around it: counting them would be wrong, so the
+  // next ray is taken. Outside, between two slabs: the shortest ray (+x) leaves the far slab
+  // through a vertex, where four faces meet; the next (-x) crosses the near slab cleanly.
+  const Eigen::Vector3d between(1.5, 0.5, 0.5);
+  const Eigen::Vector3d plus_x = winding_ray_directions()[0];
+  ASSERT_EQ(plus_x.x(), 1.0);
+  IndexedMesh slabs = fanned_box({0, -2, -2}, {1, 3, 3}, {});
+  const IndexedMesh far_slab = fanned_box({2, -2, -2}, {2.5, 3, 3}, {between + plus_x});
+  const int offset = static_cast<int>(slabs.vertices.size());
+  slabs.vertices.insert(slabs.vertices.end(), far_slab.vertices.begin(), far_slab.vertices.end());
+  for (std::vector<int> f : far_slab.faces) {
+    for (int& v : f) v += offset;
+    slabs.faces.push_back(f);
+  }
+  EXPECT_NEAR(make_mesh_surface(slabs)->distance(between).distance_m, 0.5, 1e-12);
+
+  // Inside, every ray through a vertex: the solid angles decide.
+  const Eigen::Vector3d centre(0.5, 0.5, 0.5);
+  std::vector<Eigen::Vector3d> exits;  // each direction's dominant coordinate is +-1
+  for (const Eigen::Vector3d& d : winding_ray_directions()) exits.push_back(centre + 0.5 * d);
+  const auto box = make_mesh_surface(fanned_box({0, 0, 0}, {1, 1, 1}, exits));
+  EXPECT_NEAR(box->distance(centre).distance_m, -0.5, 1e-12);
+  EXPECT_NEAR(box->distance({0.5, 0.5, 0.25}).distance_m, -0.25, 1e-12);
 }
 
 TEST(MeshSurface, RefusesWhatCannotBeQueried) {
