@@ -114,6 +114,7 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
                 StepWorkspace& workspace) {
   check_state_size(model, state);
   if (!params.obstacles.empty() || params.self_collision.enabled) workspace.step_start_x = state.x;
+  if (!params.obstacles.empty()) workspace.obstacle_distances.prepare(model, params.obstacles);
   StepStatus status = StepStatus::ok;
   switch (params.integrator) {
     case Integrator::symplectic_euler:
@@ -149,7 +150,8 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     }
     workspace.obstacle_contacts = resolve_obstacle_contacts(
         model, params.obstacles, params.time_step, end_time_s, workspace.step_start_x, state,
-        workspace.obstacle_holding_normal, workspace.obstacle_penalty_impulse);
+        workspace.obstacle_holding_normal, workspace.obstacle_penalty_impulse,
+        &workspace.obstacle_distances);
     const bool both = params.self_collision.enabled && !params.obstacles.empty();
     if (both) workspace.before_self_collision_x = state.x;
     workspace.self_collision = resolve_self_collisions(
@@ -160,7 +162,8 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
       moved_particles(workspace.before_self_collision_x, state.x,
                       workspace.moved_by_self_collision);
       resolve_obstacle_contacts_of(workspace.moved_by_self_collision, params.obstacles,
-                                   params.time_step, end_time_s, workspace.step_start_x, state);
+                                   params.time_step, end_time_s, workspace.step_start_x, state,
+                                   &workspace.obstacle_distances);
     }
   }
   state.time += params.time_step;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "solver/collision/obstacle_distance_cache.hpp"
 #include "solver/collision/self_collision.hpp"
 #include "solver/forces/accumulate_forces.hpp"
 #include "solver/integrators/implicit_euler_workspace.hpp"
@@ -28,6 +29,8 @@ struct StepWorkspace {
   Eigen::MatrixXd obstacle_penalty_impulse;
   /// 3 x #P outward normal of the obstacle that held each particle in the last step, 0 if none
   Eigen::Matrix3Xd obstacle_holding_normal;
+  /// each particle's last distance query to each mesh obstacle, to skip those that cannot matter
+  ObstacleDistanceCache obstacle_distances;
   SelfCollisionReport self_collision;        ///< what self-collision handling did in the last step
   SelfCollisionCache self_collision_pairs;   ///< broad-phase pairs kept between steps
   Eigen::VectorXd before_self_collision_x;   ///< 3#P, when there are obstacles too (m)

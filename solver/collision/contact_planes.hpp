@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
+#include "solver/collision/obstacle_distance_cache.hpp"
 #include "solver/spring_model.hpp"
 
 namespace tissu {
@@ -35,11 +36,14 @@ struct ContactPlane {
 /// thickness below it (x_0 gone round a curved obstacle or past its middle: no plane holds the
 /// path, and the projection after the step keeps the particle out). `stiffness` is beta
 /// (dimensionless): k = beta m / h^2, so that a particle resting on a plane under gravity sinks
-/// g h^2 / beta into it. In particle order, then obstacle order.
+/// g h^2 / beta into it. In particle order, then obstacle order. `distances`, if given (prepared
+/// for this step), skips a mesh's queries where it knows x_0 farther than that, and records the
+/// others.
 void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                          double stiffness, double time_step_s, double end_time_s,
                          const Eigen::VectorXd& start_x, const Eigen::VectorXd& first_iterate,
-                         std::vector<ContactPlane>& planes);
+                         std::vector<ContactPlane>& planes,
+                         ObstacleDistanceCache* distances = nullptr);
 
 /// How far x (3, m) is below the plane (m), 0 when above it.
 inline double contact_depth_m(const ContactPlane& plane, const Eigen::Vector3d& x) {

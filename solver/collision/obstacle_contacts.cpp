@@ -1,6 +1,7 @@
 #include "solver/collision/obstacle_contacts.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -8,6 +9,29 @@
 
 namespace tissu {
 namespace {
+
+/// One particle's queries of one obstacle, remembered in `cache` if there is one, which may then
+/// bound their answers without a query.
+struct ParticleQueries {
+  ObstacleDistanceCache* cache;
+  int obstacle;
+  int particle;
+
+  /// A lower bound on the signed distance at x (m), from the queries before; -infinity if none.
+  double distance_at_least_m(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
+                             const Eigen::Vector3d& x) const {
+    if (cache == nullptr) return -std::numeric_limits<double>::infinity();
+    return cache->distance_at_least_m(obstacle, particle, o, placement, time_s, x);
+  }
+
+  SurfaceDistance distance(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
+                           const Eigen::Vector3d& x) const {
+    const SurfaceDistance found = surface_distance(o, placement, x);
+    if (cache != nullptr)
+      cache->record(obstacle, particle, o, placement, time_s, x, found.distance_m);
+    return found;
+  }
+};
 
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
 /// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
@@ -59,25 +83,26 @@ double carry_bound_m(const Obstacle& obstacle, const ObstaclePlacement& before,
 std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstaclePlacement& before,
                                        const ObstaclePlacement& after, double h, double time_s,
                                        const Eigen::Vector3d& start, double step_normal_impulse,
+                                       const ParticleQueries& queries,
                                        Eigen::Ref<Eigen::Vector3d> x,
                                        Eigen::Ref<Eigen::Vector3d> v) {
   // A signed distance changes by at most the distance moved (it is 1-Lipschitz: its sign flips on
   // the surface only), so a path shorter than the end's clearance never came within the thickness:
   // first against a bound on the path's length (with a bound on the clearance, then the
-  // clearance), then against the path itself.
+  // clearance, by the mesh's box or by the particle's queries before), then against the path.
   const bool moves = obstacle.motion.moves() || obstacle.animation;
   const double path_bound_m =
       (x - start).norm() + (moves ? carry_bound_m(obstacle, before, after, h, start) : 0.0);
-  if (surface_distance_at_least_m(obstacle, after, x) - obstacle.thickness_m > path_bound_m) {
-    return std::nullopt;
-  }
-  SurfaceDistance surface = surface_distance(obstacle, after, x);
+  const double at_least_m = std::max(surface_distance_at_least_m(obstacle, after, x),
+                                     queries.distance_at_least_m(obstacle, after, time_s, x));
+  if (at_least_m - obstacle.thickness_m > path_bound_m) return std::nullopt;
+  SurfaceDistance surface = queries.distance(obstacle, after, time_s, x);
   const double end_clearance_m = surface.distance_m - obstacle.thickness_m;
   if (moves && end_clearance_m > path_bound_m) return std::nullopt;
   const Eigen::Vector3d from = moves ? carry_with_surface(obstacle, before, after, start) : start;
   if (end_clearance_m > (x - from).norm()) return std::nullopt;
   const bool ends_near = surface.distance_m < obstacle.thickness_m;
-  const SurfaceDistance at_start = surface_distance(obstacle, after, from);
+  const SurfaceDistance at_start = queries.distance(obstacle, after, time_s, from);
   // ending near the far side of a part thinner than the step means it went through
   const bool crossed =
       ends_near && at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
@@ -131,17 +156,21 @@ struct StepPlacements {
 
 /// Every obstacle against particle p (see resolve_obstacle_contacts); returns how many touched it
 /// and sets `holding_normal` to the last one's outward normal. `step_normal_impulse` is p's column
-/// of resolve_obstacle_contacts()'s (m/s), or null.
+/// of resolve_obstacle_contacts()'s (m/s), or null; `distances` remembers p's queries, or is null.
 int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacements& placements,
-                     double time_step_s, double time_s, const Eigen::Vector3d& start,
-                     const double* step_normal_impulse, Eigen::Ref<Eigen::Vector3d> x,
-                     Eigen::Ref<Eigen::Vector3d> v, Eigen::Ref<Eigen::Vector3d> holding_normal) {
+                     double time_step_s, double time_s, int p, const Eigen::Vector3d& start,
+                     const double* step_normal_impulse, ObstacleDistanceCache* distances,
+                     Eigen::Ref<Eigen::Vector3d> x, Eigen::Ref<Eigen::Vector3d> v,
+                     Eigen::Ref<Eigen::Vector3d> holding_normal) {
   const auto& [before, after] = placements;
+  const auto queries_of = [&](std::size_t k) {
+    return ParticleQueries{distances, static_cast<int>(k), p};
+  };
   int touched = 0;
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
     const double impulse = step_normal_impulse != nullptr ? step_normal_impulse[k] : 0.0;
-    if (const auto normal =
-            resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start, impulse, x, v)) {
+    if (const auto normal = resolve(obstacles[k], before[k], after[k], time_step_s, time_s, start,
+                                    impulse, queries_of(k), x, v)) {
       holding_normal = *normal;
       ++touched;
     }
@@ -153,8 +182,11 @@ int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacement
   // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
   // more than a thickness, is left where the last one put it (a hand holding cloth).
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
-    if (surface_distance_at_least_m(obstacles[k], after[k], x) > 0.0) continue;  // outside
-    const SurfaceDistance inside = surface_distance(obstacles[k], after[k], x);
+    if (surface_distance_at_least_m(obstacles[k], after[k], x) > 0.0 ||
+        queries_of(k).distance_at_least_m(obstacles[k], after[k], time_s, x) > 0.0) {
+      continue;  // outside
+    }
+    const SurfaceDistance inside = queries_of(k).distance(obstacles[k], after[k], time_s, x);
     if (!(inside.distance_m < -obstacles[k].thickness_m)) continue;
     x = carry_with_surface(obstacles[k], before[k], after[k], start);
     v = surface_velocity(obstacles[k], before[k], after[k],
@@ -169,7 +201,8 @@ int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacement
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
                               State& state, Eigen::Matrix3Xd& holding_normal,
-                              const Eigen::MatrixXd& step_normal_impulse) {
+                              const Eigen::MatrixXd& step_normal_impulse,
+                              ObstacleDistanceCache* distances) {
   const int particles = model.particle_count();
   holding_normal.setZero(3, particles);
   if (obstacles.empty()) return 0;
@@ -179,17 +212,18 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
 #pragma omp parallel for schedule(static) reduction(+ : contacts) if (particles >= min_parallel_items)
   for (int p = 0; p < particles; ++p) {
     if (model.pinned[p]) continue;
-    contacts +=
-        resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p),
-                         impulses ? &step_normal_impulse(0, p) : nullptr, state.x.segment<3>(3 * p),
-                         state.v.segment<3>(3 * p), holding_normal.col(p));
+    contacts += resolve_particle(
+        obstacles, placements, time_step_s, time_s, p, start_x.segment<3>(3 * p),
+        impulses ? &step_normal_impulse(0, p) : nullptr, distances, state.x.segment<3>(3 * p),
+        state.v.segment<3>(3 * p), holding_normal.col(p));
   }
   return contacts;
 }
 
 void resolve_obstacle_contacts_of(const std::vector<int>& moved,
                                   const std::vector<Obstacle>& obstacles, double time_step_s,
-                                  double time_s, const Eigen::VectorXd& start_x, State& state) {
+                                  double time_s, const Eigen::VectorXd& start_x, State& state,
+                                  ObstacleDistanceCache* distances) {
   if (obstacles.empty() || moved.empty()) return;
   const StepPlacements placements(obstacles, time_step_s, time_s);
   const int count = static_cast<int>(moved.size());
@@ -199,13 +233,17 @@ void resolve_obstacle_contacts_of(const std::vector<int>& moved,
     const Eigen::Vector3d x = state.x.segment<3>(3 * p);
     bool inside = false;
     for (std::size_t o = 0; o < obstacles.size() && !inside; ++o) {
-      inside = !(surface_distance_at_least_m(obstacles[o], placements.after[o], x) > 0.0) &&
-               surface_distance(obstacles[o], placements.after[o], x).distance_m < 0.0;
+      const ParticleQueries queries{distances, static_cast<int>(o), p};
+      const ObstaclePlacement& after = placements.after[o];
+      inside = !(surface_distance_at_least_m(obstacles[o], after, x) > 0.0) &&
+               !(queries.distance_at_least_m(obstacles[o], after, time_s, x) > 0.0) &&
+               queries.distance(obstacles[o], after, time_s, x).distance_m < 0.0;
     }
     if (!inside) continue;  // within an obstacle's thickness at most: left to the cloth's layers
     Eigen::Vector3d unused_normal;
-    resolve_particle(obstacles, placements, time_step_s, time_s, start_x.segment<3>(3 * p), nullptr,
-                     state.x.segment<3>(3 * p), state.v.segment<3>(3 * p), unused_normal);
+    resolve_particle(obstacles, placements, time_step_s, time_s, p, start_x.segment<3>(3 * p),
+                     nullptr, distances, state.x.segment<3>(3 * p), state.v.segment<3>(3 * p),
+                     unused_normal);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
+#include "solver/collision/obstacle_distance_cache.hpp"
 #include "solver/spring_model.hpp"
 
 namespace tissu {
@@ -37,11 +38,14 @@ namespace tissu {
 /// where none did, and returns the number of contacts.
 /// `step_normal_impulse` (#obstacles x #P, m/s, or empty) is the normal impulse per unit mass each
 /// obstacle already gave each particle during the step (a minimiser's contact penalty,
-/// contact_planes.hpp): friction is then bounded by mu times it plus dv_n.
+/// contact_planes.hpp): friction is then bounded by mu times it plus dv_n. `distances`, if given
+/// (prepared for this step), skips a mesh's queries where it knows the particle farther than
+/// that, and records the others.
 int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                               double time_step_s, double time_s, const Eigen::VectorXd& start_x,
                               State& state, Eigen::Matrix3Xd& holding_normal,
-                              const Eigen::MatrixXd& step_normal_impulse = Eigen::MatrixXd());
+                              const Eigen::MatrixXd& step_normal_impulse = Eigen::MatrixXd(),
+                              ObstacleDistanceCache* distances = nullptr);
 
 /// The same for those of the particles `moved` (indices, none pinned) that another response
 /// (self-collision) has moved inside an obstacle, beyond its surface: obstacles have the last word,
@@ -50,6 +54,7 @@ int resolve_obstacle_contacts(const SpringModel& model, const std::vector<Obstac
 /// (two layers pressed on a floor). Each path is again measured from `start_x`, the step's start.
 void resolve_obstacle_contacts_of(const std::vector<int>& moved,
                                   const std::vector<Obstacle>& obstacles, double time_step_s,
-                                  double time_s, const Eigen::VectorXd& start_x, State& state);
+                                  double time_s, const Eigen::VectorXd& start_x, State& state,
+                                  ObstacleDistanceCache* distances = nullptr);
 
 }  // namespace tissu

@@ -136,8 +136,8 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
   StepPotential potential;
   double energy_j = 0.0;
   const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
-  if (!start_step_minimisation(model, params, state, newton.common, potential, energy_j,
-                               pd_preconditioner)) {
+  if (!start_step_minimisation(model, params, state, newton.common, &workspace.obstacle_distances,
+                               potential, energy_j, pd_preconditioner)) {
     return StepStatus::non_finite;
   }
   const double force_scale_n = step_force_scale(model, potential);

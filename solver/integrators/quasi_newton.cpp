@@ -83,7 +83,8 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
 
   StepPotential potential;
   double energy_j = 0.0;
-  if (!start_step_minimisation(model, params, state, qn.common, potential, energy_j)) {
+  if (!start_step_minimisation(model, params, state, qn.common, &workspace.obstacle_distances,
+                               potential, energy_j)) {
     return StepStatus::non_finite;
   }
   resize_history(3 * particles, options.history, qn);

@@ -9,7 +9,8 @@ namespace tissu {
 
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
-                             StepPotential& potential, double& energy_j, bool use_pd_matrix) {
+                             ObstacleDistanceCache* obstacle_distances, StepPotential& potential,
+                             double& energy_j, bool use_pd_matrix) {
   const double h = params.time_step;
   Environment explicit_forces = params.environment;
   explicit_forces.air_damping = 0.0;  // air damping is in the potential, implicit
@@ -28,8 +29,11 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   potential.start_x = &state.x;
   potential.inertial = &workspace.inertial;
   potential.air_damping = params.environment.air_damping;
+  if (obstacle_distances != nullptr && !params.obstacles.empty()) {
+    obstacle_distances->prepare(model, params.obstacles);  // an integrator called on its own
+  }
   find_contact_planes(model, params.obstacles, params.obstacle_penalty, h, state.time + h, state.x,
-                      workspace.x, workspace.contacts);
+                      workspace.x, workspace.contacts, obstacle_distances);
   if (!workspace.contacts.empty()) potential.contacts = &workspace.contacts;
   prepare_step_potential(model, potential, workspace.potential);
   energy_j = evaluate_step_potential(model, potential, workspace.x, workspace.potential,

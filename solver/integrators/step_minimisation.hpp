@@ -16,13 +16,15 @@ namespace tissu {
 /// Starts a step: f_ext (gravity and wind; air damping is left to the potential, implicit), y,
 /// x = x_0 = x_n + h v_n, with `use_pd_matrix` the PD matrix for this model and h and its
 /// factorisation (a Newton step preconditioned by multigrid needs neither), the potential's start
-/// directions and obstacle contacts (with SolverParams::obstacle_penalty), and E(x_0) with its
+/// directions and obstacle contacts (with SolverParams::obstacle_penalty; `obstacle_distances`, if
+/// given and prepared for this step, skips the mesh queries it can answer), and E(x_0) with its
 /// gradient. Fills `potential` (which points into `workspace` and
 /// `state`). False when something is not finite (or the PD matrix cannot be factorised): the step
 /// is then non_finite.
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
-                             StepPotential& potential, double& energy_j, bool use_pd_matrix = true);
+                             ObstacleDistanceCache* obstacle_distances, StepPotential& potential,
+                             double& energy_j, bool use_pd_matrix = true);
 
 /// Ends a step at the iterate x (3#P, m): v = (x - x_n)/h for the free particles, then x (pinned
 /// particles keep their velocity, x holds their x_0). Returns non_finite, leaving the state as it
