@@ -40,15 +40,11 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
       // tangent plane ahead of it, by (R + t)(1 - cos) of the angle it slides.)
       const double plane_reach_m = 2.0 * obstacle.thickness_m + travel_m;
       if (!(surface_distance_at_least_m(obstacle, after[k], x0) < plane_reach_m)) continue;
-      const int kk = static_cast<int>(k);
-      if (distances != nullptr && distances->distance_at_least_m(kk, p, obstacle, after[k],
-                                                                 end_time_s, x0) >= plane_reach_m) {
+      const ParticleQueries queries{distances, static_cast<int>(k), p};
+      if (queries.distance_at_least_m(obstacle, after[k], end_time_s, x0) >= plane_reach_m) {
         continue;
       }
-      const SurfaceDistance at_x0 = surface_distance(obstacle, after[k], x0);
-      if (distances != nullptr) {
-        distances->record(kk, p, obstacle, after[k], end_time_s, x0, at_x0.distance_m);
-      }
+      const SurfaceDistance at_x0 = queries.distance(obstacle, after[k], end_time_s, x0);
       if (!(at_x0.distance_m < plane_reach_m)) continue;
       const Eigen::Vector3d from = obstacle.motion.moves() || obstacle.animation
                                        ? carry_with_surface(obstacle, before[k], after[k], start)

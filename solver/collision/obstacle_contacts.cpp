@@ -1,7 +1,6 @@
 #include "solver/collision/obstacle_contacts.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 #include <vector>
 
@@ -9,29 +8,6 @@
 
 namespace tissu {
 namespace {
-
-/// One particle's queries of one obstacle, remembered in `cache` if there is one, which may then
-/// bound their answers without a query.
-struct ParticleQueries {
-  ObstacleDistanceCache* cache;
-  int obstacle;
-  int particle;
-
-  /// A lower bound on the signed distance at x (m), from the queries before; -infinity if none.
-  double distance_at_least_m(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
-                             const Eigen::Vector3d& x) const {
-    if (cache == nullptr) return -std::numeric_limits<double>::infinity();
-    return cache->distance_at_least_m(obstacle, particle, o, placement, time_s, x);
-  }
-
-  SurfaceDistance distance(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
-                           const Eigen::Vector3d& x) const {
-    const SurfaceDistance found = surface_distance(o, placement, x);
-    if (cache != nullptr)
-      cache->record(obstacle, particle, o, placement, time_s, x, found.distance_m);
-    return found;
-  }
-};
 
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
 /// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):

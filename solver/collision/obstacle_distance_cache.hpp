@@ -13,6 +13,7 @@
 /// bit.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
@@ -49,6 +50,31 @@ class ObstacleDistanceCache {
   std::vector<const void*> m_obstacles;  ///< each obstacle's surface or animation
   int m_particles = 0;
   std::vector<Query> m_queries;  ///< k #P + p
+};
+
+/// One particle's queries of one obstacle, remembered in `cache` if there is one (else plain
+/// queries and no bound).
+struct ParticleQueries {
+  ObstacleDistanceCache* cache;
+  int obstacle;
+  int particle;
+
+  /// A lower bound on the signed distance at x (m), from the queries before; -infinity if none.
+  double distance_at_least_m(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
+                             const Eigen::Vector3d& x) const {
+    if (cache == nullptr) return -std::numeric_limits<double>::infinity();
+    return cache->distance_at_least_m(obstacle, particle, o, placement, time_s, x);
+  }
+
+  /// surface_distance(), recorded.
+  SurfaceDistance distance(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
+                           const Eigen::Vector3d& x) const {
+    const SurfaceDistance found = surface_distance(o, placement, x);
+    if (cache != nullptr) {
+      cache->record(obstacle, particle, o, placement, time_s, x, found.distance_m);
+    }
+    return found;
+  }
 };
 
 }  // namespace tissu
