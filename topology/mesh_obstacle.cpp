@@ -17,6 +17,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,26 @@ struct ObstacleTriangles {
   std::vector<std::array<int, 3>> flat;
 };
 
+/// How far from the origin an obstacle's vertex may lie (m): a body scanned in millimetres fits,
+/// and squared distances stay far from overflowing CGAL's exact fallback (beyond 1e154 m).
+constexpr double max_coordinate_m = 1e6;
+
+/// The reason `x`, vertex `v`, cannot be an obstacle's vertex, or "" if it can.
+std::string vertex_refusal(int v, const Eigen::Vector3d& x) {
+  if (!x.allFinite()) return "vertex " + std::to_string(v) + " has a non-finite coordinate";
+  if (x.cwiseAbs().maxCoeff() > max_coordinate_m) {
+    std::ostringstream message;
+    message << "vertex " << v << " has a coordinate of " << x.cwiseAbs().maxCoeff()
+            << " m; expected at most " << max_coordinate_m << " m from the origin";
+    return message.str();
+  }
+  return "";
+}
+
+/// Farther than this from a mesh's box (m), a point is a blown-up particle: its distance is taken
+/// to a corner, where CGAL's squared distances would overflow.
+constexpr double far_beyond_m = 1e100;
+
 bool has_zero_area(const IndexedMesh& mesh, const std::array<int, 3>& t) {
   const Eigen::Vector3d& a = mesh.vertices[t[0]];
   return (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).squaredNorm() == 0.0;
@@ -50,8 +71,8 @@ bool has_zero_area(const IndexedMesh& mesh, const std::array<int, 3>& t) {
 ObstacleTriangles obstacle_triangles(const IndexedMesh& mesh, ObstacleMeshReport& report) {
   const int vertex_count = static_cast<int>(mesh.vertices.size());
   for (int v = 0; v < vertex_count; ++v) {
-    if (!mesh.vertices[v].allFinite()) {
-      throw MeshError("vertex " + std::to_string(v) + " has a non-finite coordinate");
+    if (const std::string refusal = vertex_refusal(v, mesh.vertices[v]); !refusal.empty()) {
+      throw MeshError(refusal);
     }
   }
   if (mesh.faces.empty()) throw MeshError("the mesh has no faces");
@@ -139,6 +160,10 @@ class MeshSurface final : public SurfaceQuery {
 
   /// Unsigned: the distance and the direction from the nearest point to x_m.
   SurfaceDistance nearest(const Eigen::Vector3d& x_m) const override {
+    if (!(m_box.exteriorDistance(x_m) < far_beyond_m)) {  // or not finite: no tree search
+      const Eigen::Vector3d offset = x_m - m_corners[0];
+      return {offset.stableNorm(), offset.stableNormalized(), 0, Eigen::Vector3d::UnitX()};
+    }
     const auto [closest, triangle] = m_tree.closest_point_and_primitive(to_point(x_m));
     const int index = static_cast<int>(triangle - m_triangles.cbegin());
     const Eigen::Vector3d nearest = to_eigen(closest);
@@ -244,8 +269,8 @@ void check_samples(const MeshSamples& samples, std::size_t vertex_count,
                       std::to_string(vertex_count));
     }
     for (std::size_t v = 0; v < x.size(); ++v) {
-      if (!x[v].allFinite()) {
-        throw MeshError(sample + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+      if (const std::string refusal = vertex_refusal(static_cast<int>(v), x[v]); !refusal.empty()) {
+        throw MeshError(sample + ": " + refusal);
       }
     }
     for (const std::array<int, 3>& t3 : triangles) {

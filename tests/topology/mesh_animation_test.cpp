@@ -95,6 +95,10 @@ TEST(MeshAnimation, RefusesSamplesThatDoNotFitItsMesh) {
   broken[3].x() = NAN;
   EXPECT_THAT(refusal({{0.0, 1.0}, {c.vertices, broken}}),
               HasSubstr("sample 1: vertex 3 has a non-finite coordinate"));
+  broken[3].x() = -2e6;
+  EXPECT_THAT(
+      refusal({{0.0, 1.0}, {c.vertices, broken}}),
+      HasSubstr("sample 1: vertex 3 has a coordinate of 2e+06 m; expected at most 1e+06 m"));
   // the whole cube flattened onto z = 0: its side triangles lose their area
   EXPECT_THAT(refusal({{0.0, 1.0},
                        {c.vertices, moved(c,

@@ -330,6 +330,20 @@ TEST(MeshSurface, RefusesWhatCannotBeQueried) {
         }
       },
       MeshError);
+  IndexedMesh huge = cube();
+  huge.vertices[2] *= 1e300;  // its squared distances would overflow CGAL's exact fallback
+  EXPECT_THROW(
+      {
+        try {
+          make_mesh_surface(huge);
+        } catch (const MeshError& e) {
+          EXPECT_STREQ(e.what(),
+                       "vertex 2 has a coordinate of 1e+300 m; expected at most 1e+06 m from the "
+                       "origin");
+          throw;
+        }
+      },
+      MeshError);
   EXPECT_THROW(make_mesh_surface(IndexedMesh{cube().vertices, {}, {}}), MeshError);
   IndexedMesh flat = cube();
   flat.faces = {{0, 1, 1}, {0, 0, 0}};
@@ -376,6 +390,18 @@ TEST(MeshSurface, ClothAboveSharpFeaturesFallsFreelyUntilItTouches) {
   expect_free_fall_above(corner_up, {0.0, 0.0});
   expect_free_fall_above(corner_up, {0.4, 0.2});        // over an edge running down from the corner
   expect_free_fall_above(notched_block(), {1.0, 0.5});  // over the notch
+}
+
+TEST(MeshSurface, MeasuresABlownUpParticleWithoutOverflowing) {
+  // a particle at 1e200 m, finite: its squared distance overflows, so CGAL's search would fail;
+  // its distance is taken to a corner, to a relative 1e-12 of the nearest face's
+  const auto surface = make_mesh_surface(cube());
+  for (const Eigen::Vector3d& x :
+       {Eigen::Vector3d(1e200, 0, 0), Eigen::Vector3d(0, -3e160, 1e150)}) {
+    const SurfaceDistance d = surface->distance(x);
+    EXPECT_NEAR(d.distance_m / x.stableNorm(), 1.0, 1e-12) << x.transpose();
+    EXPECT_NEAR(d.normal.dot(x.stableNormalized()), 1.0, 1e-12) << x.transpose();
+  }
 }
 
 TEST(MeshSurface, RefusesAnInvalidMesh) {
