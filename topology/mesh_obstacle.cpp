@@ -212,11 +212,10 @@ class MeshSurface final : public SurfaceQuery {
   }
 
   /// The winding number of a closed surface at x_m as the signed count of its crossings by the
-  /// segment from x_m to x_m + `ray` (outside the box): +1 where it leaves
-  /// through a face's front, -1 where it enters (for a closed, boundary-free chain, the integer the
-  /// solid angles sum to). Decided by CGAL's exact predicates: nothing when the segment passes
-  /// through an edge or a vertex, or starts in a face's plane, where a crossing could count twice
-  /// or not at all.
+  /// segment from x_m to x_m + `ray` (outside the box): +1 where it leaves through a face's front,
+  /// -1 where it enters (for a closed, boundary-free chain, the integer the solid angles sum to).
+  /// Decided by CGAL's exact predicates: nothing when the segment passes through an edge or a
+  /// vertex, or starts in a face's plane, where a crossing could count twice or not at all.
   std::optional<int> crossings(const Eigen::Vector3d& x_m, const Eigen::Vector3d& ray) const {
     const Kernel::Point_3 from = to_point(x_m);
     const Kernel::Point_3 to = to_point(x_m + ray);

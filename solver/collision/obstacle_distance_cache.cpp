@@ -38,13 +38,17 @@ double ObstacleDistanceCache::distance_at_least_m(int k, int p, const Obstacle& 
   if (obstacle.shape != ObstacleShape::mesh) return unknown_m;
   const Query& last = m_queries[static_cast<std::size_t>(k) * m_particles + p];
   if (last.distance_m == unknown_m) return unknown_m;
-  double moved_m = (placement.pose.apply_inverse(x) - last.local_m).norm();
+  const Eigen::Vector3d local_m = placement.pose.apply_inverse(x);
+  double moved_m = (local_m - last.local_m).norm();
   if (obstacle.animation) {
     // instants within 1e-9 s share a surface: room for that, and for round-off
     moved_m += (1.0 + 1e-9) * obstacle.animation->fastest_speed_m_per_s() *
                (std::abs(time_s - last.time_s) + 2e-9);
   }
-  return last.distance_m - moved_m - 1e-9;  // a nanometre for the frame's round-off
+  // room for the round-off of the frames and of the distances: a nanometre, more far from the
+  // origin (an obstacle may lie up to 1e6 m from it)
+  const double round_off_m = 1e-9 + 1e-15 * (local_m.norm() + last.local_m.norm());
+  return last.distance_m - moved_m - round_off_m;
 }
 
 void ObstacleDistanceCache::record(int k, int p, const Obstacle& obstacle,
