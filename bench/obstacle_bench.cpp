@@ -95,7 +95,8 @@ void WindingNumber(benchmark::State& state) {
 BENCHMARK(WindingNumber)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
 
 /// An animated sphere's surface at a new instant each iteration, and its first query: its vertices
-/// interpolated, its AABB tree built (CGAL builds it, and its kd-tree of hints, at the first query).
+/// interpolated, its AABB tree built (CGAL builds it, and its kd-tree of hints, at the first
+/// query).
 void AnimatedSurfaceAtANewInstant(benchmark::State& state) {
   const IndexedMesh mesh = sphere(static_cast<int>(state.range(0)));
   std::vector<Eigen::Vector3d> moved = mesh.vertices;

@@ -39,9 +39,8 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
       // as it does without the penalty. (A particle sliding on a ball starts a little below the
       // tangent plane ahead of it, by (R + t)(1 - cos) of the angle it slides.)
       const double plane_reach_m = 2.0 * obstacle.thickness_m + travel_m;
-      if (!(surface_distance_at_least_m(obstacle, after[k], x0) < plane_reach_m)) continue;
       const ParticleQueries queries{distances, static_cast<int>(k), p};
-      if (queries.distance_at_least_m(obstacle, after[k], end_time_s, x0) >= plane_reach_m) {
+      if (!(queries.distance_at_least_m(obstacle, after[k], end_time_s, x0) < plane_reach_m)) {
         continue;
       }
       const SurfaceDistance at_x0 = queries.distance(obstacle, after[k], end_time_s, x0);

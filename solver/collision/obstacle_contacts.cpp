@@ -69,9 +69,10 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
   const bool moves = obstacle.motion.moves() || obstacle.animation;
   const double path_bound_m =
       (x - start).norm() + (moves ? carry_bound_m(obstacle, before, after, h, start) : 0.0);
-  const double at_least_m = std::max(surface_distance_at_least_m(obstacle, after, x),
-                                     queries.distance_at_least_m(obstacle, after, time_s, x));
-  if (at_least_m - obstacle.thickness_m > path_bound_m) return std::nullopt;
+  if (queries.distance_at_least_m(obstacle, after, time_s, x) - obstacle.thickness_m >
+      path_bound_m) {
+    return std::nullopt;
+  }
   SurfaceDistance surface = queries.distance(obstacle, after, time_s, x);
   const double end_clearance_m = surface.distance_m - obstacle.thickness_m;
   if (moves && end_clearance_m > path_bound_m) return std::nullopt;
@@ -158,8 +159,7 @@ int resolve_particle(const std::vector<Obstacle>& obstacles, const StepPlacement
   // particle squeezed between two surfaces closer than their thicknesses, and inside neither by
   // more than a thickness, is left where the last one put it (a hand holding cloth).
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
-    if (surface_distance_at_least_m(obstacles[k], after[k], x) > 0.0 ||
-        queries_of(k).distance_at_least_m(obstacles[k], after[k], time_s, x) > 0.0) {
+    if (queries_of(k).distance_at_least_m(obstacles[k], after[k], time_s, x) > 0.0) {
       continue;  // outside
     }
     const SurfaceDistance inside = queries_of(k).distance(obstacles[k], after[k], time_s, x);
@@ -211,8 +211,7 @@ void resolve_obstacle_contacts_of(const std::vector<int>& moved,
     for (std::size_t o = 0; o < obstacles.size() && !inside; ++o) {
       const ParticleQueries queries{distances, static_cast<int>(o), p};
       const ObstaclePlacement& after = placements.after[o];
-      inside = !(surface_distance_at_least_m(obstacles[o], after, x) > 0.0) &&
-               !(queries.distance_at_least_m(obstacles[o], after, time_s, x) > 0.0) &&
+      inside = !(queries.distance_at_least_m(obstacles[o], after, time_s, x) > 0.0) &&
                queries.distance(obstacles[o], after, time_s, x).distance_m < 0.0;
     }
     if (!inside) continue;  // within an obstacle's thickness at most: left to the cloth's layers

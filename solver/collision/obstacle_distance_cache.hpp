@@ -12,8 +12,8 @@
 /// step; the bound skips most of their queries (docs/benchmarks.md), with the same steps to the
 /// bit.
 
+#include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "solver/collision/obstacle.hpp"
@@ -52,18 +52,19 @@ class ObstacleDistanceCache {
   std::vector<Query> m_queries;  ///< k #P + p
 };
 
-/// One particle's queries of one obstacle, remembered in `cache` if there is one (else plain
-/// queries and no bound).
+/// One particle's queries of one obstacle, remembered in `cache` if there is one.
 struct ParticleQueries {
   ObstacleDistanceCache* cache;
   int obstacle;
   int particle;
 
-  /// A lower bound on the signed distance at x (m), from the queries before; -infinity if none.
+  /// A lower bound on the distance at x (m) that costs no query: a mesh's box
+  /// (surface_distance_at_least_m()), or the particle's queries before where they say more.
   double distance_at_least_m(const Obstacle& o, const ObstaclePlacement& placement, double time_s,
                              const Eigen::Vector3d& x) const {
-    if (cache == nullptr) return -std::numeric_limits<double>::infinity();
-    return cache->distance_at_least_m(obstacle, particle, o, placement, time_s, x);
+    const double box_m = surface_distance_at_least_m(o, placement, x);
+    if (cache == nullptr) return box_m;
+    return std::max(box_m, cache->distance_at_least_m(obstacle, particle, o, placement, time_s, x));
   }
 
   /// surface_distance(), recorded.

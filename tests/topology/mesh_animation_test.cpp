@@ -158,11 +158,7 @@ TEST(MeshAnimation, FrictionCarriesAParticleAsTheSurfaceStretches) {
 /// about the origin at t = 2 s, and also turned and carried by a rigid motion: a mesh obstacle that
 /// moves both ways, with room in its box far from its surface.
 Obstacle turned_moving_cubes() {
-  IndexedMesh pair = cube();
-  for (const Eigen::Vector3d& v : cube().vertices)
-    pair.vertices.push_back(v + 5.0 * Eigen::Vector3d::UnitX());
-  for (const std::vector<int>& f : cube().faces)
-    pair.faces.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
+  const IndexedMesh pair = test::with_part(cube(), test::cube_mesh({5.0, 0.0, 0.0}, 1.0));
   const Eigen::Vector3d dx = Eigen::Vector3d::UnitX();
   MeshSamples samples{
       {0.0, 1.0, 2.0},

@@ -197,20 +197,10 @@ TEST(MeshSurface, SignsDistancesRightAroundAConcaveNotch) {
 /// then share (a non-manifold edge); the first cube's faces are all listed twice, and one face is
 /// degenerate.
 IndexedMesh cube_soup() {
-  IndexedMesh soup = cube();
-  const auto append = [&soup](const IndexedMesh& part) {
-    const int offset = static_cast<int>(soup.vertices.size());
-    soup.vertices.insert(soup.vertices.end(), part.vertices.begin(), part.vertices.end());
-    for (std::vector<int> f : part.faces) {
-      for (int& v : f) v += offset;
-      soup.faces.push_back(f);
-    }
-  };
-  append(test::cube_mesh({1.0, 0.0, 0.0}, 1.0));
-  const IndexedMesh corner_neighbour = test::cube_mesh({2.0, 2.0, 0.0}, 1.0);
+  IndexedMesh soup = test::with_part(cube(), test::cube_mesh({1.0, 0.0, 0.0}, 1.0));
   // weld the shared edge x = y = 1 onto the first cube's corners 3 (z = -1) and 7 (z = +1)
   const int offset = static_cast<int>(soup.vertices.size());
-  append(corner_neighbour);
+  soup = test::with_part(soup, test::cube_mesh({2.0, 2.0, 0.0}, 1.0));
   for (std::vector<int>& f : soup.faces) {
     for (int& v : f) {
       if (v == offset + 0) v = 3;
@@ -298,14 +288,9 @@ TEST(MeshSurface, SignsAPointWhoseRaysRunThroughVertices) {
   const Eigen::Vector3d between(1.5, 0.5, 0.5);
   const Eigen::Vector3d plus_x = winding_ray_directions()[0];
   ASSERT_EQ(plus_x.x(), 1.0);
-  IndexedMesh slabs = fanned_box({0, -2, -2}, {1, 3, 3}, {});
-  const IndexedMesh far_slab = fanned_box({2, -2, -2}, {2.5, 3, 3}, {between + plus_x});
-  const int offset = static_cast<int>(slabs.vertices.size());
-  slabs.vertices.insert(slabs.vertices.end(), far_slab.vertices.begin(), far_slab.vertices.end());
-  for (std::vector<int> f : far_slab.faces) {
-    for (int& v : f) v += offset;
-    slabs.faces.push_back(f);
-  }
+  const IndexedMesh slabs =
+      test::with_part(fanned_box({0, -2, -2}, {1, 3, 3}, {}),
+                      fanned_box({2, -2, -2}, {2.5, 3, 3}, {between + plus_x}));
   EXPECT_NEAR(make_mesh_surface(slabs)->distance(between).distance_m, 0.5, 1e-12);
 
   // Inside, every ray through a vertex: the solid angles decide.
