@@ -1,10 +1,6 @@
 #include "topology/mesh_obstacle.hpp"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-
-#include <boost/iterator/function_output_iterator.hpp>
+#include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -22,16 +18,12 @@
 #include <utility>
 #include <vector>
 
-#include "solver/collision/primitive_distance.hpp"
+#include "solver/collision/triangle_bvh.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/winding_number.hpp"
 
 namespace tissu {
 namespace {
-
-using Triangles = std::vector<Kernel::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 /// The triangles of an obstacle mesh, as vertex ids, after the checks and clean-up
 /// make_mesh_surface documents.
@@ -132,21 +124,27 @@ bool is_closed(const ObstacleTriangles& triangles) {
                      [](const auto& edge) { return edge.second == 0; });
 }
 
+/// Three corners per triangle, in `triangles`' order.
+std::vector<Eigen::Vector3d> triangle_corners_of(const std::vector<Eigen::Vector3d>& vertices,
+                                                 const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<Eigen::Vector3d> corners;
+  corners.reserve(3 * triangles.size());
+  for (const std::array<int, 3>& t : triangles) {
+    for (int v : t) corners.push_back(vertices[v]);
+  }
+  return corners;
+}
+
 class MeshSurface final : public SurfaceQuery {
  public:
-  MeshSurface(const MeshSurface&) = delete;  // the tree points into m_triangles
-  MeshSurface& operator=(const MeshSurface&) = delete;
-  MeshSurface(const std::vector<Eigen::Vector3d>& vertices,
-              const std::vector<std::array<int, 3>>& triangles, bool closed) {
-    for (const std::array<int, 3>& t : triangles) {
-      for (int v : t) m_corners.push_back(vertices[v]);
-      m_triangles.emplace_back(to_point(vertices[t[0]]), to_point(vertices[t[1]]),
-                               to_point(vertices[t[2]]));
-    }
+  /// The surface of `corners` (three per triangle); `shape`, the hierarchy's shape if another
+  /// pose of the same triangles has one (an animation's), else built here.
+  MeshSurface(std::vector<Eigen::Vector3d> corners, bool closed,
+              std::shared_ptr<const TriangleBvhShape> shape = nullptr)
+      : m_closed(closed),
+        m_bvh(hierarchy_of(std::move(corners), std::move(shape))),
+        m_corners(m_bvh.corners()) {
     for (const Eigen::Vector3d& corner : m_corners) m_box.extend(corner);
-    m_closed = closed;
-    m_tree.insert(m_triangles.begin(), m_triangles.end());
-    m_tree.accelerate_distance_queries();
   }
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
@@ -164,14 +162,12 @@ class MeshSurface final : public SurfaceQuery {
       const Eigen::Vector3d offset = x_m - m_corners[0];
       return {offset.stableNorm(), offset.stableNormalized(), 0, Eigen::Vector3d::UnitX()};
     }
-    const auto [closest, triangle] = m_tree.closest_point_and_primitive(to_point(x_m));
-    const int index = static_cast<int>(triangle - m_triangles.cbegin());
-    const Eigen::Vector3d nearest = to_eigen(closest);
+    const auto [index, barycentric, distance_m2] = m_bvh.nearest(x_m);
     const Eigen::Vector3d& a = m_corners[3 * index];
     const Eigen::Vector3d& b = m_corners[3 * index + 1];
     const Eigen::Vector3d& c = m_corners[3 * index + 2];
-    const Eigen::Vector3d barycentric = nearest_on_triangle(nearest, a, b, c);  // of itself
-    const Eigen::Vector3d offset = x_m - nearest;
+    const Eigen::Vector3d offset =
+        x_m - (barycentric[0] * a + barycentric[1] * b + barycentric[2] * c);
     const double gap_m = offset.norm();
     if (!(gap_m > 1e-12)) return {0.0, (b - a).cross(c - a).normalized(), index, barycentric};
     return {gap_m, offset / gap_m, index, barycentric};
@@ -219,30 +215,40 @@ class MeshSurface final : public SurfaceQuery {
   std::optional<int> crossings(const Eigen::Vector3d& x_m, const Eigen::Vector3d& ray) const {
     const Kernel::Point_3 from = to_point(x_m);
     const Kernel::Point_3 to = to_point(x_m + ray);
-    const auto orientation = Kernel().orientation_3_object();
+    const Kernel::Segment_3 segment(from, to);
+    const Kernel kernel;
+    const auto orientation = kernel.orientation_3_object();
+    const auto do_intersect = kernel.do_intersect_3_object();
     int winding = 0;
     bool degenerate = false;
-    const auto count = [&](Triangles::const_iterator hit) {
-      const Kernel::Triangle_3& t = *hit;
+    m_bvh.for_each_near_segment(x_m, x_m + ray, [&](int index) {
+      const Kernel::Point_3 t[3] = {to_point(m_corners[3 * index]),
+                                    to_point(m_corners[3 * index + 1]),
+                                    to_point(m_corners[3 * index + 2])};
+      if (!do_intersect(segment, Kernel::Triangle_3(t[0], t[1], t[2]))) return;
       const CGAL::Orientation side = orientation(t[0], t[1], t[2], from);
       degenerate |= side == CGAL::COPLANAR;
       for (int k = 0; k < 3; ++k) {
         degenerate |= orientation(from, to, t[k], t[(k + 1) % 3]) == CGAL::COPLANAR;
       }
       winding += side == CGAL::NEGATIVE ? 1 : -1;  // from behind the face: leaving by its front
-    };
-    const Kernel::Segment_3 segment(from, to);
-    m_tree.all_intersected_primitives(segment, boost::make_function_output_iterator(count));
+    });
     if (degenerate) return std::nullopt;
     return winding;
   }
 
+  /// The hierarchy of `shape` (one built for `corners` if there is none) around `corners`.
+  static TriangleBvh hierarchy_of(std::vector<Eigen::Vector3d> corners,
+                                  std::shared_ptr<const TriangleBvhShape> shape) {
+    if (!shape) shape = std::make_shared<const TriangleBvhShape>(corners);
+    return TriangleBvh(std::move(shape), std::move(corners));
+  }
+
   Eigen::AlignedBox3d m_box;  // of every corner
-  Triangles m_triangles;      // the tree points into it: filled before the tree, never changed
-  std::vector<Eigen::Vector3d> m_corners;
   bool m_closed = false;
-  Tree m_tree;
-  mutable std::once_flag m_winding_built;  // the fallback's tree, built when first needed
+  TriangleBvh m_bvh;
+  const std::vector<Eigen::Vector3d>& m_corners;  // three per triangle, kept by m_bvh
+  mutable std::once_flag m_winding_built;         // the fallback's tree, built when first needed
   mutable std::optional<WindingNumberTree> m_winding;
 };
 
@@ -285,7 +291,11 @@ void check_samples(const MeshSamples& samples, std::size_t vertex_count,
 class MeshAnimation final : public SurfaceAnimation {
  public:
   MeshAnimation(MeshSamples samples, std::vector<std::array<int, 3>> triangles, bool closed)
-      : m_samples(std::move(samples)), m_triangles(std::move(triangles)), m_closed(closed) {
+      : m_samples(std::move(samples)),
+        m_triangles(std::move(triangles)),
+        m_closed(closed),
+        m_shape(std::make_shared<const TriangleBvhShape>(
+            triangle_corners_of(m_samples.vertices_m.front(), m_triangles))) {
     std::set<int> used;  // the vertices of its triangles: other parts' may move, not these
     for (const std::array<int, 3>& t : m_triangles) used.insert(t.begin(), t.end());
     for (std::size_t k = 1; k < m_samples.times_s.size(); ++k) {
@@ -310,7 +320,7 @@ class MeshAnimation final : public SurfaceAnimation {
     for (const auto& [built_s, surface] : m_built) {
       if (std::abs(built_s - t) <= same_instant_s) return surface;
     }
-    auto surface = std::make_shared<const MeshSurface>(vertices_at(t), m_triangles, m_closed);
+    auto surface = std::make_shared<const MeshSurface>(corners_at(t), m_closed, m_shape);
     m_built.emplace_back(t, surface);
     if (m_built.size() > kept_surfaces) m_built.pop_front();
     return surface;
@@ -338,24 +348,31 @@ class MeshAnimation final : public SurfaceAnimation {
     return t;
   }
 
-  /// The vertices at t, within the samples' times: linear between the two samples around it.
-  std::vector<Eigen::Vector3d> vertices_at(double t) const {
+  /// Its triangles' corners at t, within the samples' times: linear between the two samples
+  /// around it.
+  std::vector<Eigen::Vector3d> corners_at(double t) const {
     const std::vector<double>& times = m_samples.times_s;
     const std::size_t after = std::upper_bound(times.begin(), times.end(), t) - times.begin();
     if (after == 0 || after == times.size()) {
-      return m_samples.vertices_m[after == 0 ? 0 : times.size() - 1];
+      return triangle_corners_of(m_samples.vertices_m[after == 0 ? 0 : times.size() - 1],
+                                 m_triangles);
     }
     const double s = (t - times[after - 1]) / (times[after] - times[after - 1]);
     const std::vector<Eigen::Vector3d>& a = m_samples.vertices_m[after - 1];
     const std::vector<Eigen::Vector3d>& b = m_samples.vertices_m[after];
-    std::vector<Eigen::Vector3d> x(a.size());
-    for (std::size_t v = 0; v < x.size(); ++v) x[v] = (1.0 - s) * a[v] + s * b[v];
-    return x;
+    std::vector<Eigen::Vector3d> corners;
+    corners.reserve(3 * m_triangles.size());
+    for (const std::array<int, 3>& triangle : m_triangles) {
+      for (int v : triangle) corners.push_back((1.0 - s) * a[v] + s * b[v]);
+    }
+    return corners;
   }
 
   MeshSamples m_samples;
   std::vector<std::array<int, 3>> m_triangles;
   bool m_closed;
+  /// which triangles share a box, from the first sample: each instant only refits the boxes
+  std::shared_ptr<const TriangleBvhShape> m_shape;
   double m_fastest_m_per_s = 0.0;
   /// per segment between consecutive samples: where nothing moves, the first sample of the still
   /// run it ends; -1 where something moves
@@ -381,7 +398,8 @@ std::shared_ptr<const SurfaceQuery> make_mesh_surface(const IndexedMesh& mesh,
   r = {};
   const ObstacleTriangles triangles = obstacle_triangles(mesh, r);
   r.closed = is_closed(triangles);
-  return std::make_shared<MeshSurface>(mesh.vertices, triangles.kept, r.closed);
+  return std::make_shared<MeshSurface>(triangle_corners_of(mesh.vertices, triangles.kept),
+                                       r.closed);
 }
 
 std::vector<IndexedMesh> separate_parts(const IndexedMesh& mesh) {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// A triangle mesh as an obstacle's surface, fixed or animated: distances through CGAL's AABB
-/// tree, inside and outside by the generalised winding number.
+/// A triangle mesh as an obstacle's surface, fixed or animated: distances through a bounding-box
+/// hierarchy (triangle_bvh.hpp), inside and outside by the generalised winding number.
 
 #include <array>
 #include <memory>
@@ -63,8 +63,8 @@ struct MeshSamples {
 /// An animated obstacle mesh: `mesh`'s faces, checked and cleaned as make_mesh_surface does (with
 /// the first sample's positions, which replace `mesh`'s), their corners at `samples`' positions,
 /// interpolated linearly in time between samples and held before the first and after the last.
-/// Its surface at an instant is built (an AABB tree) when first
-/// asked for, and the last few are kept: a run asks for each step's end twice (as the next step's
+/// Its surface at an instant is built when first asked for (the hierarchy over its triangles,
+/// built once from the first sample, refitted to the instant's corners), and the last few are kept: a run asks for each step's end twice (as the next step's
 /// start), and instants within 1e-9 s count as one. Throws MeshError naming the sample (from 0)
 /// and the element: no sample, a time not finite or not after the one before, a sample whose
 /// vertex count differs from the mesh's or with a non-finite coordinate, a kept triangle of no area
