@@ -48,14 +48,25 @@ inline Eigen::Matrix3d full_block(const SymmetricBlock& b) {
   return (Eigen::Matrix3d() << b[0], b[1], b[2], b[1], b[3], b[4], b[2], b[4], b[5]).finished();
 }
 
+/// The code the products run: AVX2 with fused multiply-adds where the processor has them (the
+/// products 1.5 times faster on the stiff sheet's Hessian at 81 x 81 and 128 x 128, where it fits
+/// in the caches; docs/benchmarks.md), else portable scalar code. The two round differently, so a
+/// run's bits depend on the processor, never on the number of threads.
+enum class BlockProductKernel { portable, avx2 };
+
+/// AVX2 if this processor has it (and fused multiply-adds), else portable.
+BlockProductKernel block_product_kernel();
+
 /// y = A x (3 rows and 3 columns' worth each). Rows in parallel: the same bits on any number of
 /// threads. Allocates nothing once y is sized.
 void symmetric_block_product(const SymmetricBlockMatrix& matrix, const Eigen::VectorXd& x,
-                             Eigen::VectorXd& y);
+                             Eigen::VectorXd& y,
+                             BlockProductKernel kernel = block_product_kernel());
 
 /// r = b - A x, as symmetric_block_product(); r may be b (an update in place).
 void symmetric_block_residual(const SymmetricBlockMatrix& matrix, const Eigen::VectorXd& b,
-                              const Eigen::VectorXd& x, Eigen::VectorXd& r);
+                              const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                              BlockProductKernel kernel = block_product_kernel());
 
 /// The same matrix in Eigen's scalar storage (for direct solvers and tests).
 Eigen::SparseMatrix<double> to_sparse(const SymmetricBlockMatrix& matrix);

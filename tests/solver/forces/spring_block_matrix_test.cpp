@@ -128,5 +128,36 @@ TEST(SpringBlockMatrix, FilterGivesSASPlusIMinusS) {
   EXPECT_LT((residual - (b - expected * x)).cwiseAbs().maxCoeff(), 1e-13);
 }
 
+TEST(SymmetricBlockMatrix, EveryKernelOfThisProcessorGivesTheProducts) {
+  State state;
+  const SpringModel model = test::random_model(300, 1500, 0, 26, state);
+  std::vector<Eigen::Matrix3d> blocks;
+  Eigen::VectorXd diagonal;
+  random_blocks(model, blocks, diagonal);
+  SpringBlockPattern pattern;
+  update_spring_block_pattern(model, pattern);
+  SymmetricBlockMatrix symmetric;
+  assemble_symmetric_spring_block_matrix(model, pattern, upper_triangles(blocks), diagonal, false,
+                                         symmetric);
+  const Eigen::MatrixXd expected = dense_reference(model, blocks, diagonal);
+  const int dofs = 3 * model.particle_count();
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(dofs, -1.0, 2.0).array().sin();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(dofs, 3.0, -0.5);
+  std::vector<BlockProductKernel> kernels{BlockProductKernel::portable};
+#if defined(__x86_64__)
+  // the vectorised kernel is chosen exactly where the processor runs it
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  EXPECT_EQ(block_product_kernel(), avx2 ? BlockProductKernel::avx2 : BlockProductKernel::portable);
+  if (avx2) kernels.push_back(BlockProductKernel::avx2);
+#endif
+  for (const BlockProductKernel kernel : kernels) {
+    Eigen::VectorXd product, residual = b;
+    symmetric_block_product(symmetric, x, product, kernel);
+    symmetric_block_residual(symmetric, residual, x, residual, kernel);  // in place
+    EXPECT_LT((product - expected * x).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((residual - (b - expected * x)).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace tissu
