@@ -24,7 +24,11 @@ goes smoothly from 0 at the arm's inner end to 1 8 cm further along the arm (at 
 the shoulder bends and stretches; torso and head stay still.
 
 Sizes in metres, z up, the body faces -y and stands on z = 0. numpy only:
-/usr/bin/python3 scripts/make_body.py"""
+/usr/bin/python3 scripts/make_body.py
+/usr/bin/python3 scripts/make_body.py --resolution 4 --out /tmp/fine   # 16 times the triangles
+(--resolution k puts k times the rings along each profile and k times the points around each
+ring: a finer body of the same shape and motion, to measure what a body's size costs.)"""
+import argparse
 import math
 import pathlib
 import struct
@@ -146,15 +150,17 @@ def arm_frame(side):
     return joint, axis, e1, np.cross(axis, e1)
 
 
-def body():
+def body(resolution=1):
     """(positions, triangles, parts): parts lists (name, first vertex, vertex count, first
-    triangle, triangle count, side) with side 0 for the torso, +1 / -1 for the right / left arm."""
+    triangle, triangle count, side) with side 0 for the torso, +1 / -1 for the right / left arm.
+    `resolution` multiplies the rings along each profile and the points around each ring."""
+    spacing = RING_SPACING_M / resolution
     pieces = [("torso_neck_head", 0,
-               lathe(resample(torso_profile(), RING_SPACING_M), TORSO_AROUND,
+               lathe(resample(torso_profile(), spacing), TORSO_AROUND * resolution,
                      (0, 0, 0), (0, 0, 1), (1, 0, 0), (0, 1, 0)))]
-    arm_rings = resample(arm_profile(), 1.25 * RING_SPACING_M)
+    arm_rings = resample(arm_profile(), 1.25 * spacing)
     for name, side in (("arm_right", 1), ("arm_left", -1)):
-        pieces.append((name, side, lathe(arm_rings, ARM_AROUND, *arm_frame(side))))
+        pieces.append((name, side, lathe(arm_rings, ARM_AROUND * resolution, *arm_frame(side))))
     positions, triangles, parts = [], [], []
     vertex_count = triangle_count = 0
     for name, side, (p, f) in pieces:
@@ -228,11 +234,20 @@ def write_pc2(path, samples):
 
 
 def main():
-    rest, triangles, parts = body()
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--resolution", type=int, default=1,
+                        help="rings along and points around each part, times this (default 1)")
+    parser.add_argument("--out", type=pathlib.Path, default=ROOT / "data" / "meshes",
+                        help="folder for body.obj and body_arms.pc2 (default data/meshes)")
+    arguments = parser.parse_args()
+    if arguments.resolution < 1:
+        parser.error(f"--resolution {arguments.resolution}: expected an integer of at least 1")
+    rest, triangles, parts = body(arguments.resolution)
     count = round(DURATION_S * SAMPLES_PER_SECOND) + 1
     samples = np.stack([pose(rest, parts, fall_fraction(k / SAMPLES_PER_SECOND))
                         for k in range(count)])
-    meshes = ROOT / "data" / "meshes"
+    meshes = arguments.out
+    meshes.mkdir(parents=True, exist_ok=True)
     write_obj(meshes / "body.obj", rest, triangles, parts)
     write_pc2(meshes / "body_arms.pc2", samples)
     speed = np.linalg.norm(np.diff(samples, axis=0), axis=2) * SAMPLES_PER_SECOND
