@@ -149,6 +149,9 @@ struct SolverParams {
   /// it); 0: obstacles act only after the step, as for the other integrators
   double obstacle_penalty = 0.0;
   SelfCollisionOptions self_collision;  ///< the cloth against itself, after every step
+  /// the largest relative stretch of a structural spring (dimensionless, e.g. 0.1 for 10 %),
+  /// imposed after every step, after the contacts (strain_limit.hpp); 0: none
+  double strain_limit = 0.0;
 };
 
 }  // namespace tissu

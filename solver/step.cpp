@@ -11,6 +11,7 @@
 #include "solver/integrators/projective_dynamics.hpp"
 #include "solver/integrators/quasi_newton.hpp"
 #include "solver/integrators/symplectic_euler.hpp"
+#include "solver/strain_limit.hpp"
 
 namespace tissu {
 namespace {
@@ -165,6 +166,10 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
                                    params.time_step, end_time_s, workspace.step_start_x, state,
                                    &workspace.obstacle_distances);
     }
+    // last: a contact's friction holding a particle would otherwise undo the correction at every
+    // step (the T-shirt's sleeves, docs/benchmarks.md); what it moves into an obstacle, by a
+    // fraction of an edge, the next step's contacts push out
+    workspace.strain_limited = limit_strain(model, params.strain_limit, params.time_step, state);
   }
   state.time += params.time_step;
   if (!finite || !state.x.allFinite() || !state.v.allFinite()) return StepStatus::non_finite;

@@ -25,6 +25,7 @@ struct StepWorkspace {
   QuasiNewtonWorkspace quasi_newton;  ///< buffers and caches of quasi_newton_step()
   Eigen::VectorXd step_start_x;  ///< 3#P positions before the step, when there are obstacles (m)
   int obstacle_contacts = 0;     ///< particle-obstacle contacts resolved by the last step
+  int strain_limited = 0;        ///< structural springs the last step's strain limit shortened
   /// #obstacles x #P normal impulse per unit mass of the minimiser's contact penalties (m/s)
   Eigen::MatrixXd obstacle_penalty_impulse;
   /// 3 x #P outward normal of the obstacle that held each particle in the last step, 0 if none

@@ -202,6 +202,8 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.solver.obstacle_penalty =
       simulation.number_or("obstacle_penalty", s.solver.obstacle_penalty, non_negative(""));
+  s.solver.strain_limit = simulation.number_or("strain_limit", s.solver.strain_limit,
+                                               between(0.0, 10.0, " (0: none; 0.1: 10 %)"));
   s.threads = simulation.integer_or("threads", 0, 0, 1024);
   s.solver.pd = read_pd(simulation.optional_object("pd"));
   s.solver.newton = read_newton(simulation.optional_object("newton"));
@@ -311,6 +313,13 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
       read_self_collision(top.optional_object("self_collision", switched_off));
   s.adaptive = read_adaptive(top.optional_object("adaptive", switched_off), s.frame_rate);
   s.tearing = read_tearing(top.optional_object("tearing", switched_off));
+  if (s.tearing.enabled && s.tearing.options.strain_threshold > 0.0 &&
+      s.solver.strain_limit > 0.0) {
+    std::ostringstream message;
+    message << name << ": simulation.strain_limit: expected 0 (none) when tearing by strain, "
+            << "which the limit would hold back, got " << s.solver.strain_limit;
+    throw ScenarioError(message.str());
+  }
   if (s.springs.material && s.solver.integrator == Integrator::projective_dynamics &&
       s.springs.material->formulation == StiffnessFormulation::delingette2008) {
     throw ScenarioError(name +

@@ -332,6 +332,26 @@ TEST(Scenario, ReadsSelfCollision) {
               HasSubstr("did you mean 'thickness'?"));
 }
 
+TEST(Scenario, ReadsTheStrainLimit) {
+  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json").solver.strain_limit, 0.0);
+  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {"simulation.strain_limit=0.1"})
+                       .solver.strain_limit,
+                   0.1);
+  EXPECT_EQ(with("simulation.strain_limit", "-0.1"),
+            "dir/s.json: simulation.strain_limit: expected a number between 0 and 10 (0: none; "
+            "0.1: 10 %), got -0.1");
+  // tearing by strain would be held back by the limit; tearing along cuts is not
+  EXPECT_EQ(test::scenario_error_of(test::minimal_scenario,
+                                    {"simulation.strain_limit=0.1", R"(tearing={"strain": 0.3})"}),
+            "dir/s.json: simulation.strain_limit: expected 0 (none) when tearing by strain, which "
+            "the limit would hold back, got 0.1");
+  EXPECT_TRUE(
+      parse_scenario(test::minimal_scenario, "s.json",
+                     {"simulation.strain_limit=0.1",
+                      R"(tearing={"cuts": [{"time": 0.5, "line": [[0, 0, 0], [1, 0, 0]]}]})"})
+          .tearing.enabled);
+}
+
 TEST(Scenario, ReadsTearing) {
   EXPECT_FALSE(parse_scenario(test::minimal_scenario, "s.json").tearing.enabled);
   const Scenario s = parse_scenario(test::minimal_scenario, "s.json", {R"(tearing={
