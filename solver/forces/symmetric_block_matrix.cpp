@@ -1,5 +1,7 @@
 #include "solver/forces/symmetric_block_matrix.hpp"
 
+#include <algorithm>
+
 #include "solver/parallel.hpp"
 
 #if defined(__x86_64__)
@@ -37,18 +39,18 @@ void portable_rows(const SymmetricBlockMatrix& matrix, const Eigen::VectorXd* b,
 }
 
 #if defined(__x86_64__)
-/// portable_rows() in AVX2 registers: block j's three columns (a0 a1 a2), (a1 a3 a4), (a2 a4 a5),
-/// each read from the block's six values by two overlapping loads and a shuffle, times x_j's
-/// coordinates, summed into three accumulators (lane 3 unused). Six loads and three fused
-/// multiply-adds a block, against eighteen scalar operations.
-__attribute__((target("avx2,fma"))) void avx2_rows(const SymmetricBlockMatrix& matrix,
-                                                   const Eigen::VectorXd* b,
-                                                   const Eigen::VectorXd& x, Eigen::VectorXd& r) {
-  const int nodes = matrix.row_count();
+/// Rows [first, last) of portable_rows() in AVX2 registers: block j's three columns (a0 a1 a2),
+/// (a1 a3 a4), (a2 a4 a5), each read from the block's six values by two overlapping loads and a
+/// shuffle, times x_j's coordinates, summed into three accumulators (lane 3 unused). Six loads and
+/// three fused multiply-adds a block, against eighteen scalar operations. No OpenMP inside: clang
+/// does not give a parallel region's body its function's target.
+__attribute__((target("avx2,fma"))) void avx2_row_range(const SymmetricBlockMatrix& matrix,
+                                                        const Eigen::VectorXd* b,
+                                                        const Eigen::VectorXd& x,
+                                                        Eigen::VectorXd& r, int first, int last) {
   const int* columns = matrix.columns.data();
   const double* values = matrix.values.data();
-#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
-  for (int i = 0; i < nodes; ++i) {
+  for (int i = first; i < last; ++i) {
     __m256d sum0 = _mm256_setzero_pd(), sum1 = _mm256_setzero_pd(), sum2 = _mm256_setzero_pd();
     for (int k = matrix.offsets[i]; k < matrix.offsets[i + 1]; ++k) {
       const double* xj = x.data() + 3 * columns[k];
@@ -64,6 +66,18 @@ __attribute__((target("avx2,fma"))) void avx2_rows(const SymmetricBlockMatrix& m
     alignas(32) double y[4];
     _mm256_store_pd(y, _mm256_add_pd(_mm256_add_pd(sum0, sum1), sum2));
     for (int c = 0; c < 3; ++c) r[3 * i + c] = b ? (*b)[3 * i + c] - y[c] : y[c];
+  }
+}
+
+/// avx2_row_range() over all rows, in chunks in parallel.
+void avx2_rows(const SymmetricBlockMatrix& matrix, const Eigen::VectorXd* b,
+               const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  constexpr int rows_per_chunk = 64;
+  const int nodes = matrix.row_count();
+  const int chunks = (nodes + rows_per_chunk - 1) / rows_per_chunk;
+#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
+  for (int c = 0; c < chunks; ++c) {
+    avx2_row_range(matrix, b, x, r, c * rows_per_chunk, std::min(nodes, (c + 1) * rows_per_chunk));
   }
 }
 #endif
