@@ -64,11 +64,12 @@ struct MeshSamples {
 /// the first sample's positions, which replace `mesh`'s), their corners at `samples`' positions,
 /// interpolated linearly in time between samples and held before the first and after the last.
 /// Its surface at an instant is built when first asked for (the hierarchy over its triangles,
-/// built once from the first sample, refitted to the instant's corners), and the last few are kept: a run asks for each step's end twice (as the next step's
-/// start), and instants within 1e-9 s count as one. Throws MeshError naming the sample (from 0)
-/// and the element: no sample, a time not finite or not after the one before, a sample whose
-/// vertex count differs from the mesh's or with a non-finite coordinate, a kept triangle of no area
-/// in some sample, or anything make_mesh_surface refuses.
+/// built once from the first sample, refitted to the instant's corners), and the last few are kept:
+/// a run asks for each step's end twice (as the next step's start), and instants within 1e-9 s
+/// count as one. Throws MeshError naming the sample (from 0) and the element: no sample, a time not
+/// finite or not after the one before, a sample whose vertex count differs from the mesh's or with
+/// a non-finite coordinate, a kept triangle of no area in some sample, or anything
+/// make_mesh_surface refuses.
 std::shared_ptr<const SurfaceAnimation> make_mesh_animation(const IndexedMesh& mesh,
                                                             MeshSamples samples,
                                                             ObstacleMeshReport* report = nullptr);
