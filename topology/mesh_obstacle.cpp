@@ -143,9 +143,8 @@ class MeshSurface final : public SurfaceQuery {
               std::shared_ptr<const TriangleBvhShape> shape = nullptr)
       : m_closed(closed),
         m_bvh(hierarchy_of(std::move(corners), std::move(shape))),
-        m_corners(m_bvh.corners()) {
-    for (const Eigen::Vector3d& corner : m_corners) m_box.extend(corner);
-  }
+        m_corners(m_bvh.corners()),
+        m_box(m_bvh.bounds()) {}
 
   SurfaceDistance distance(const Eigen::Vector3d& x_m) const override {
     SurfaceDistance result = nearest(x_m);
@@ -244,10 +243,10 @@ class MeshSurface final : public SurfaceQuery {
     return TriangleBvh(std::move(shape), std::move(corners));
   }
 
-  Eigen::AlignedBox3d m_box;  // of every corner
   bool m_closed = false;
   TriangleBvh m_bvh;
   const std::vector<Eigen::Vector3d>& m_corners;  // three per triangle, kept by m_bvh
+  const Eigen::AlignedBox3d& m_box;               // of every corner, m_bvh's root box
   mutable std::once_flag m_winding_built;         // the fallback's tree, built when first needed
   mutable std::optional<WindingNumberTree> m_winding;
 };

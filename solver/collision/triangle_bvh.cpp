@@ -102,9 +102,9 @@ TriangleBvh::TriangleBvh(std::shared_ptr<const TriangleBvhShape> shape,
     }
   }
   if (!m_boxes.empty()) {
-    const Eigen::AlignedBox3d& root = m_boxes.front();
-    m_slack_m = 1e-9 * (root.diagonal().norm() + root.max().cwiseAbs().maxCoeff() +
-                        root.min().cwiseAbs().maxCoeff());
+    m_bounds = m_boxes.front();
+    m_slack_m = 1e-9 * (m_bounds.diagonal().norm() + m_bounds.max().cwiseAbs().maxCoeff() +
+                        m_bounds.min().cwiseAbs().maxCoeff());
   }
 }
 

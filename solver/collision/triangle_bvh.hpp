@@ -55,6 +55,8 @@ class TriangleBvh {
 
   /// The corners it was given (m).
   const std::vector<Eigen::Vector3d>& corners() const { return m_corners; }
+  /// The box of every corner (its root's; empty without triangles).
+  const Eigen::AlignedBox3d& bounds() const { return m_bounds; }
 
   /// The triangle nearest to x_m (Ericson 2005, "Real-Time Collision Detection", 5.1.5 for the
   /// point on a triangle); ties go to the first found. Not for x_m with a non-finite coordinate.
@@ -73,6 +75,7 @@ class TriangleBvh {
   std::shared_ptr<const TriangleBvhShape> m_shape;
   std::vector<Eigen::AlignedBox3d> m_boxes;  ///< per node
   std::vector<Eigen::Vector3d> m_corners;    ///< three per triangle (m)
+  Eigen::AlignedBox3d m_bounds;              ///< of every corner (m)
   /// how much the segment test widens each box (m): far above its round-off, far below any mesh
   double m_slack_m = 0.0;
 };

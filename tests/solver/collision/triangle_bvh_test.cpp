@@ -88,6 +88,9 @@ TEST(TriangleBvh, FindsTheNearestAtAnyPoseOfTheTrianglesItWasBuiltFrom) {
     moved[k] += 0.2 * Eigen::Vector3d(std::sin(1.7 * k), std::cos(0.3 * k), 0.0) / (1 + k % 7);
   }
   const TriangleBvh bvh(shape, moved);
+  Eigen::AlignedBox3d every_corner;
+  for (const Eigen::Vector3d& corner : moved) every_corner.extend(corner);
+  EXPECT_TRUE(bvh.bounds().isApprox(every_corner, 0.0));  // the refitted root: the same box
   expect_nearest_of_all(bvh, moved, random);
 }
 
