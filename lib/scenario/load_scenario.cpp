@@ -168,7 +168,7 @@ QuasiNewtonOptions read_quasi_newton(JsonObjectReader quasi_newton) {
 
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
   s.solver.integrator = read_named(
-      simulation, "integrator", Integrator::implicit_euler,
+      simulation, "integrator", Integrator::quasi_newton,
       {Integrator::symplectic_euler, Integrator::position_verlet, Integrator::implicit_euler,
        Integrator::projective_dynamics, Integrator::newton, Integrator::quasi_newton});
   s.frames = simulation.integer("frames", 1, max_frames);

@@ -151,27 +151,30 @@ std::string closing_hand(double friction) {
 })";
 }
 
-/// Lowest point of the cloth at frames 15 (just before the pins let go) and 60 (m).
-std::pair<double, double> lowest_before_and_after(const std::string& json) {
+/// Highest point of the cloth, its top edge that the plates grip, at frames 15 (just before the
+/// pins let go) and 60 (m). The top edge, not the hem: the strip below the plates bounces on its
+/// springs by up to 4 cm for a second or more with the converged integrators, where implicit
+/// Euler's single linearised step damps it at once.
+std::pair<double, double> highest_before_and_after(const std::string& json) {
   RunOptions options;
   options.output_dir = test::fresh_temp_dir("moving_body/hand");
-  std::map<int, double> lowest;
+  std::map<int, double> highest;
   options.on_surface = [&](int frame, const MaterialSurface& surface) {
-    double z = std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector3d& x : surface.current.vertices) z = std::min(z, x.z());
-    lowest[frame] = z;
+    double z = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& x : surface.current.vertices) z = std::max(z, x.z());
+    highest[frame] = z;
   };
   const RunResult result = run_scenario(parse_scenario(json, "hand.json"), options);
   EXPECT_TRUE(result.ok) << result.failure;
-  return {lowest.at(15), lowest.at(60)};
+  return {highest.at(15), highest.at(60)};
 }
 
 TEST(MovingBody, AClosingHandHoldsASheetByFriction) {
-  // held: after the pins let go the strip stays where it hung, within 1 cm over 1.5 s
-  const auto [held_before, held_after] = lowest_before_and_after(closing_hand(1.0));
+  // held: after the pins let go the gripped edge stays where it was, within 1 cm over 1.5 s
+  const auto [held_before, held_after] = highest_before_and_after(closing_hand(1.0));
   EXPECT_NEAR(held_after, held_before, 0.01);
   // without friction it slips out and falls (1.5 s of free fall is 11 m)
-  const auto [slippery_before, slippery_after] = lowest_before_and_after(closing_hand(0.0));
+  const auto [slippery_before, slippery_after] = highest_before_and_after(closing_hand(0.0));
   EXPECT_LT(slippery_after, slippery_before - 1.0);
 }
 

@@ -32,7 +32,7 @@ TEST(Scenario, MinimalScenarioGetsDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(s.springs.structural.stiffness, 100.0);
   EXPECT_FALSE(s.springs.shear.enabled);
   EXPECT_FALSE(s.springs.bending.enabled);
-  EXPECT_EQ(s.solver.integrator, Integrator::implicit_euler);
+  EXPECT_EQ(s.solver.integrator, Integrator::quasi_newton);
   EXPECT_EQ(s.frames, 3);
   EXPECT_EQ(s.substeps, 10);
   EXPECT_DOUBLE_EQ(s.solver.time_step, 1.0 / 300.0);
