@@ -167,6 +167,18 @@ QuasiNewtonOptions read_quasi_newton(JsonObjectReader quasi_newton) {
 }
 
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
+  // implicit Euler was the default until 2026-12-06: its keys without a named integrator were
+  // probably written for it, and now set nothing
+  if (!simulation.has("integrator")) {
+    for (const char* key : {"cg_tolerance", "cg_max_iterations"}) {
+      if (simulation.has(key)) {
+        s.notes.push_back(simulation.file() + ": " + simulation.key_path(key) +
+                          ": read by \"implicit_euler\" only, and this scenario names no "
+                          "simulation.integrator: it runs the default, \"quasi_newton\" (before "
+                          "2026-12-06 \"implicit_euler\"); name \"implicit_euler\" to use it");
+      }
+    }
+  }
   s.solver.integrator = read_named(
       simulation, "integrator", Integrator::quasi_newton,
       {Integrator::symplectic_euler, Integrator::position_verlet, Integrator::implicit_euler,

@@ -332,6 +332,30 @@ TEST(Scenario, ReadsSelfCollision) {
               HasSubstr("did you mean 'thickness'?"));
 }
 
+TEST(Scenario, NotesImplicitEulerKeysThatTheDefaultIntegratorIgnores) {
+  // no integrator named: the default (quasi-Newton) runs, and implicit Euler's keys set nothing
+  const Scenario unnamed =
+      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.cg_tolerance=1e-8"});
+  EXPECT_EQ(unnamed.solver.integrator, Integrator::quasi_newton);
+  ASSERT_EQ(unnamed.notes.size(), 1u);
+  EXPECT_EQ(unnamed.notes[0],
+            "dir/s.json: simulation.cg_tolerance: read by \"implicit_euler\" only, and this "
+            "scenario names no simulation.integrator: it runs the default, \"quasi_newton\" "
+            "(before 2026-12-06 \"implicit_euler\"); name \"implicit_euler\" to use it");
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
+                           {"simulation.cg_tolerance=1e-8", "simulation.cg_max_iterations=50"})
+                .notes.size(),
+            2u);
+  // named, whichever it is: the scenario says what it wants
+  for (const char* integrator : {"implicit_euler", "newton"}) {
+    const Scenario named = parse_scenario(
+        test::minimal_scenario, "dir/s.json",
+        {"simulation.cg_tolerance=1e-8", std::string("simulation.integrator=") + integrator});
+    EXPECT_TRUE(named.notes.empty()) << integrator;
+  }
+  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json").notes.empty());
+}
+
 TEST(Scenario, ReadsTheStrainLimit) {
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json").solver.strain_limit, 0.0);
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {"simulation.strain_limit=0.1"})
