@@ -42,7 +42,8 @@ std::vector<StatsColumn> stats_columns(const FrameStats& r) {
           {"boundary_edges", double(r.boundary_edges)},
           {"pin_force", r.pin_force},
           {"max_stretch", r.max_stretch},
-          {"solver_iterations", double(r.solver_iterations)}};
+          {"solver_iterations", double(r.solver_iterations)},
+          {"strain_limited", double(r.strain_limited)}};
 }
 
 StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics") {

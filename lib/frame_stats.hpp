@@ -41,6 +41,9 @@ struct FrameStats {
   /// the integrator's iterations over the frame's steps (solver/step.hpp last_step_iterations():
   /// CG, PD, Newton or L-BFGS iterations; 0 for the explicit integrators)
   int solver_iterations = 0;
+  /// structural springs the strain limit shortened, over the frame's steps (each step's first
+  /// sweep; solver/strain_limit.hpp); 0 without `simulation.strain_limit`
+  int strain_limited = 0;
 };
 
 /// A column of stats.csv and its value in a row (integers exactly, as doubles).

@@ -44,13 +44,15 @@ struct FrameSteps {
   int self_contacts = 0;
   double collision_ms = 0.0;
   int tears = 0;
-  int tip_splits = 0;    ///< edges bisected around crack tips
-  int iterations = 0;    ///< the integrator's, over the steps
-  bool stopped = false;  ///< a stop was requested before all the frame's steps were made
+  int tip_splits = 0;      ///< edges bisected around crack tips
+  int iterations = 0;      ///< the integrator's, over the steps
+  int strain_limited = 0;  ///< springs the strain limit shortened, over the steps
+  bool stopped = false;    ///< a stop was requested before all the frame's steps were made
 
   void add(StepStatus status, const SolverParams& params, const StepWorkspace& workspace) {
     if (status == StepStatus::not_converged) ++unconverged;
     iterations += last_step_iterations(params, workspace);
+    strain_limited += workspace.strain_limited;
     obstacle_contacts = workspace.obstacle_contacts;
     self_contacts += workspace.self_collision.proximities + workspace.self_collision.impacts;
     collision_ms += workspace.self_collision.wall_ms;
@@ -83,6 +85,7 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.pin_force = pin_reaction_force(m, environment, cloth.state).norm();
   s.max_stretch = max_spring_strain(m, cloth.state.x, SpringKind::structural);
   s.solver_iterations = steps.iterations;
+  s.strain_limited = steps.strain_limited;
   return s;
 }
 

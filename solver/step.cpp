@@ -139,6 +139,7 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
   }
   const bool finite =
       status != StepStatus::non_finite && state.x.allFinite() && state.v.allFinite();
+  workspace.strain_limited = 0;
   if (finite) {  // a NaN would leave the hash cells of self-collision undefined
     // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
     const double end_time_s = state.time + params.time_step;

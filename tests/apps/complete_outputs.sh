@@ -6,13 +6,14 @@ check_complete_outputs() {
   if [ -n "$(find "$dir" -maxdepth 1 -name '.*' -type f)" ]; then
     echo "temporary files left: $(find "$dir" -maxdepth 1 -name '.*' -type f)"; bad=1
   fi
-  # stats.csv: a header and whole rows of 22 fields, ending with a newline
+  # stats.csv: a header and whole rows of 23 fields (lib/frame_stats.cpp), ending with a newline
+  local fields=23
   if [ -e "$dir/stats.csv" ]; then
     if [ -s "$dir/stats.csv" ] && [ "$(tail -c 1 "$dir/stats.csv" | od -An -c | tr -d ' ')" != '\n' ]; then
       echo "stats.csv does not end with a newline"; bad=1
     fi
-    if awk -F, 'NF != 22 { exit 1 }' "$dir/stats.csv"; then :; else
-      echo "stats.csv has a row without 22 fields: $(awk -F, 'NF != 22' "$dir/stats.csv" | head -1)"; bad=1
+    if awk -F, -v n=$fields 'NF != n { exit 1 }' "$dir/stats.csv"; then :; else
+      echo "stats.csv has a row without $fields fields: $(awk -F, -v n=$fields 'NF != n' "$dir/stats.csv" | head -1)"; bad=1
     fi
   fi
   # OBJ meshes end with their last face line
