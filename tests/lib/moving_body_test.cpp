@@ -152,9 +152,9 @@ std::string closing_hand(double friction) {
 }
 
 /// Highest point of the cloth, its top edge that the plates grip, at frames 15 (just before the
-/// pins let go) and 60 (m). The top edge, not the hem: the strip below the plates bounces on its
-/// springs by up to 4 cm for a second or more with the converged integrators, where implicit
-/// Euler's single linearised step damps it at once.
+/// pins let go) and 60 (m). The top edge, not the hem: once the plates have closed, the hem
+/// bounces by up to 4 cm, for half a second with Newton and longer with quasi-Newton at its
+/// default tolerance, where implicit Euler's single linearised step damps it at once.
 std::pair<double, double> highest_before_and_after(const std::string& json) {
   RunOptions options;
   options.output_dir = test::fresh_temp_dir("moving_body/hand");
