@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <csignal>
 #include <numeric>
 
 #include "solver/pd/nested_dissection_ordering.hpp"
@@ -131,6 +132,33 @@ TEST(NestedDissectionOrdering, GivesAPermutationAndFallsBackOnGraphsWithoutEdges
       EXPECT_EQ(indices, expected) << "size " << size;
     }
   }
+}
+
+extern "C" void count_signal(int) {}
+
+TEST(NestedDissectionOrdering, LeavesTheProgramsSignalHandlersAsTheyWere) {
+  // METIS (GKlib) traps SIGTERM and SIGABRT while it orders, and puts the handlers back with
+  // signal(): System V semantics, reset on delivery and without SA_RESTART. The ordering puts
+  // them back exactly.
+  struct sigaction handler {};
+  handler.sa_handler = count_signal;
+  sigemptyset(&handler.sa_mask);
+  handler.sa_flags = SA_RESTART;
+  struct sigaction before[2];
+  const int signals[] = {SIGTERM, SIGABRT};
+  for (int k = 0; k < 2; ++k) ASSERT_EQ(sigaction(signals[k], &handler, &before[k]), 0);
+  Matrix path(300, 300);
+  path.setIdentity();
+  for (int i = 0; i + 1 < 300; ++i) path.coeffRef(i, i + 1) = path.coeffRef(i + 1, i) = -0.5;
+  NestedDissectionOrdering::PermutationType permutation;
+  NestedDissectionOrdering()(path, permutation);
+  for (int k = 0; k < 2; ++k) {
+    struct sigaction after {};
+    ASSERT_EQ(sigaction(signals[k], &before[k], &after), 0);  // and back to the test's
+    EXPECT_EQ(after.sa_handler, &count_signal) << "signal " << signals[k];
+    EXPECT_EQ(after.sa_flags & (SA_RESTART | SA_RESETHAND), SA_RESTART) << "signal " << signals[k];
+  }
+  EXPECT_EQ(permutation.size(), 300);
 }
 
 }  // namespace
