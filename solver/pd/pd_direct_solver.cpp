@@ -72,7 +72,76 @@ bool PdDirectSolver::factorize(const PdSystem& system) {
   for (Eigen::Matrix3Xd& updates : m_separator_updates) {
     updates.resize(3, free_count - m_partition.separator_start);
   }
+  if (m_precision == SolvePrecision::single) {
+    m_values_single.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
+    m_inverse_d_single = m_inverse_d.cast<float>();
+    for (Eigen::Matrix4Xf& updates : m_separator_updates_single) {
+      updates.resize(4, free_count - m_partition.separator_start);
+    }
+  }
   return true;
+}
+
+template <class Scalar, int Rows>
+void PdDirectSolver::sweep(
+    const Scalar* values, const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& inverse_d,
+    Eigen::Matrix<Scalar, Rows, Eigen::Dynamic>& solution,
+    std::array<Eigen::Matrix<Scalar, Rows, Eigen::Dynamic>, 2>& separator_updates) const {
+  const int free_count = static_cast<int>(solution.cols());
+  const bool two_threads = free_count >= min_parallel_items;
+  const int threads = half_threads();
+  // L D L^T z = z in place, x, y and z of a particle together: each triangular sweep reads L
+  // once for the three coordinates (Eigen's solveInPlace reads it once per right-hand side column)
+  const Matrix& lower = m_ldlt->matrixL().nestedExpression();  // unit lower, CSC
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  const FactorPartition& partition = m_partition;
+  const int separator_start = partition.separator_start;
+
+  // L y = z: each half scatters into its own rows and into its own copy of the separator rows
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
+  for (int half = 0; half < 2; ++half) {
+    auto& updates = separator_updates[half];
+    updates.setZero();
+    for (const int column : partition.half_columns[half]) {
+      const auto y = solution.col(column).eval();
+      const int separator_entry = partition.separator_entry[column];
+      for (int k = partition.first_below_diagonal[column]; k < separator_entry; ++k) {
+        solution.col(inner[k]) -= values[k] * y;
+      }
+      for (int k = separator_entry; k < outer[column + 1]; ++k) {
+        updates.col(inner[k] - separator_start) -= values[k] * y;
+      }
+    }
+  }
+  for (int column = separator_start; column < free_count; ++column) {
+    solution.col(column) += separator_updates[0].col(column - separator_start) +
+                            separator_updates[1].col(column - separator_start);
+    const auto y = solution.col(column).eval();
+    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
+      solution.col(inner[k]) -= values[k] * y;
+    }
+  }
+  solution.array().rowwise() *= inverse_d.transpose().array();  // D^-1
+
+  // L^T x = y: the separator, then the halves, each reading its own rows and the separator's
+  const auto solve_column_backward = [&](int column) {
+    auto x = solution.col(column).eval();
+    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
+      x -= values[k] * solution.col(inner[k]);
+    }
+    solution.col(column) = x;
+  };
+  for (int column = free_count - 1; column >= separator_start; --column) {
+    solve_column_backward(column);
+  }
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
+  for (int half = 0; half < 2; ++half) {
+    const std::vector<int>& columns = partition.half_columns[half];
+    for (auto column = columns.rbegin(); column != columns.rend(); ++column) {
+      solve_column_backward(*column);
+    }
+  }
 }
 
 bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eigen::VectorXd& p) {
@@ -91,60 +160,16 @@ bool PdDirectSolver::solve(const PdSystem& system, const Eigen::VectorXd& c, Eig
     }
     m_solution.col(permutation[row]) = b;
   }
-  // L D L^T z = z in place, x, y and z of a particle together: each triangular sweep reads L
-  // once for the three coordinates (Eigen's solveInPlace reads it once per right-hand side column)
-  const Matrix& lower = m_ldlt->matrixL().nestedExpression();  // unit lower, CSC
-  const int* outer = lower.outerIndexPtr();
-  const int* inner = lower.innerIndexPtr();
-  const double* values = lower.valuePtr();
-  const FactorPartition& partition = m_partition;
-  const int separator_start = partition.separator_start;
-  const bool two_threads = free_count >= min_parallel_items;
-  const int threads = half_threads();
-
-  // L y = z: each half scatters into its own rows and into its own copy of the separator rows
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
-  for (int half = 0; half < 2; ++half) {
-    Eigen::Matrix3Xd& updates = m_separator_updates[half];
-    updates.setZero();
-    for (const int column : partition.half_columns[half]) {
-      const Eigen::Vector3d y = m_solution.col(column);
-      const int separator_entry = partition.separator_entry[column];
-      for (int k = partition.first_below_diagonal[column]; k < separator_entry; ++k) {
-        m_solution.col(inner[k]) -= values[k] * y;
-      }
-      for (int k = separator_entry; k < outer[column + 1]; ++k) {
-        updates.col(inner[k] - separator_start) -= values[k] * y;
-      }
-    }
-  }
-  for (int column = separator_start; column < free_count; ++column) {
-    m_solution.col(column) += m_separator_updates[0].col(column - separator_start) +
-                              m_separator_updates[1].col(column - separator_start);
-    const Eigen::Vector3d y = m_solution.col(column);
-    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
-      m_solution.col(inner[k]) -= values[k] * y;
-    }
-  }
-  m_solution.array().rowwise() *= m_inverse_d.transpose().array();  // D^-1
-
-  // L^T x = y: the separator, then the halves, each reading its own rows and the separator's
-  const auto solve_column_backward = [&](int column) {
-    Eigen::Vector3d x = m_solution.col(column);
-    for (int k = partition.first_below_diagonal[column]; k < outer[column + 1]; ++k) {
-      x -= values[k] * m_solution.col(inner[k]);
-    }
-    m_solution.col(column) = x;
-  };
-  for (int column = free_count - 1; column >= separator_start; --column) {
-    solve_column_backward(column);
-  }
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (two_threads)
-  for (int half = 0; half < 2; ++half) {
-    const std::vector<int>& columns = partition.half_columns[half];
-    for (auto column = columns.rbegin(); column != columns.rend(); ++column) {
-      solve_column_backward(*column);
-    }
+  if (m_precision == SolvePrecision::single) {
+    m_solution_single.resize(4, free_count);
+    m_solution_single.topRows<3>() = m_solution.cast<float>();
+    m_solution_single.row(3).setZero();
+    sweep(m_values_single.data(), m_inverse_d_single, m_solution_single,
+          m_separator_updates_single);
+    m_solution = m_solution_single.topRows<3>().cast<double>();
+  } else {
+    sweep(m_ldlt->matrixL().nestedExpression().valuePtr(), m_inverse_d, m_solution,
+          m_separator_updates);
   }
 #pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int row = 0; row < free_count; ++row) {

@@ -11,11 +11,18 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "solver/pd/factor_partition.hpp"
 #include "solver/pd/pd_system.hpp"
 
 namespace tissu {
+
+/// Arithmetic of PdDirectSolver's triangular sweeps.
+enum class SolvePrecision {
+  exact,   ///< double: the solve of Projective Dynamics' global step
+  single,  ///< float factor and sweeps, about 1e-6 relative: a preconditioner's solve
+};
 
 /// The free-particle matrix A_ff (#F x #F, kg/s^2) of the global step, rows and columns in
 /// system.free_particles order: A_ii = a_i, A_ij = -sum of the s_ij of springs joining free i and
@@ -32,13 +39,16 @@ Eigen::SparseMatrix<double> pd_free_particle_matrix(const PdSystem& system);
 /// AMD's tree is too lopsided to split. Both choices count solves, never threads, and the sweeps
 /// keep one order of operations: the same bits for any number of threads. Refactorised when the
 /// system's generation changes (update_pd_system() rebuilt it for a new model or time step).
-/// Copying gives an unfactorised solver (Eigen's factorisations are not copyable); it factorises
-/// again on first use.
+/// With SolvePrecision::single the sweeps run in float on a float copy of the factor, x, y and z
+/// padded to four lanes: about 1e-6 relative error, for the minimisers' preconditioner (the
+/// factorisation itself stays double). Copying gives an unfactorised solver (Eigen's factorisations
+/// are not copyable); it factorises again on first use.
 class PdDirectSolver {
  public:
   PdDirectSolver() = default;
-  PdDirectSolver(const PdDirectSolver&) {}
-  PdDirectSolver& operator=(const PdDirectSolver&) {
+  PdDirectSolver(const PdDirectSolver& other) : m_precision(other.m_precision) {}
+  PdDirectSolver& operator=(const PdDirectSolver& other) {
+    m_precision = other.m_precision;
     m_ldlt.reset();
     m_generation = 0;
     m_nested_dissection = false;
@@ -57,6 +67,12 @@ class PdDirectSolver {
   /// (3#P, m), pinned entries of p read, not written; c is 3#P (kg m/s^2). Factorises first if
   /// needed. False if the factorisation failed (p unchanged).
   bool solve(const PdSystem& system, const Eigen::VectorXd& c, Eigen::VectorXd& p);
+
+  /// Sets the sweeps' arithmetic; a change factorises again at the next solve.
+  void set_precision(SolvePrecision precision) {
+    if (precision != m_precision) m_generation = 0;
+    m_precision = precision;
+  }
 
   /// Number of factorisations done by this object, for tests and benchmarks.
   int factorization_count() const { return m_factorizations; }
@@ -84,6 +100,17 @@ class PdDirectSolver {
   Eigen::Matrix3Xd m_solution;  ///< 3 x #F right-hand side, then solution, in permuted order (m)
   /// 3 x #separator per half: what each half's forward sweep subtracts from the separator rows
   std::array<Eigen::Matrix3Xd, 2> m_separator_updates;
+  SolvePrecision m_precision = SolvePrecision::exact;
+  /// single precision: the factor's values, 1 / D, the solution padded to 4 rows, the updates
+  std::vector<float> m_values_single;
+  Eigen::VectorXf m_inverse_d_single;
+  Eigen::Matrix4Xf m_solution_single;
+  std::array<Eigen::Matrix4Xf, 2> m_separator_updates_single;
+
+  template <class Scalar, int Rows>
+  void sweep(const Scalar* values, const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& inverse_d,
+             Eigen::Matrix<Scalar, Rows, Eigen::Dynamic>& solution,
+             std::array<Eigen::Matrix<Scalar, Rows, Eigen::Dynamic>, 2>& separator_updates) const;
 };
 
 }  // namespace tissu

@@ -105,7 +105,9 @@ TEST(StrainLimit, HoldsASoftSheetHangingFromTwoCornersWithinTheLimit) {
         largest = std::max(largest, stretch(model, state, s));
     }
     (limit > 0.0 ? limited_stretch : unlimited_stretch) = largest;
-    if (limit > 0.0) EXPECT_GT(workspace.strain_limited, 0);
+    if (limit > 0.0) {
+      EXPECT_GT(workspace.strain_limited, 0);
+    }
   }
   // the soft sheet sags far beyond 10 % near its pins; limited, it ends each step near 10 % (the
   // sweeps are capped: the chain from the pins, pulled by the whole sheet, converges slowly)

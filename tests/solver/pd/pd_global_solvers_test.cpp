@@ -237,6 +237,46 @@ TEST(PdDirectSolver, ASettledFactorIsReorderedByNestedDissection) {
   EXPECT_TRUE((results[0].array() == results[1].array()).all());
 }
 
+// the minimisers' preconditioner sweeps in float: within float round-off of the exact solve,
+// under both orderings, with the same bits on one and two threads
+TEST(PdDirectSolver, SolvesInSinglePrecisionWithinFloatRoundOff) {
+  State state;
+  const LinearProblem problem =
+      make_problem(test::grid_model(30, 30, 0.02, 0.001, 3000.0, 0.0, state), state, 1.0 / 30.0, 7);
+  const Eigen::VectorXd exact = direct_solution(problem);
+  const double scale_m = exact.lpNorm<Eigen::Infinity>();
+  PdDirectSolver single;
+  single.set_precision(SolvePrecision::single);
+  const auto solve = [&] {
+    Eigen::VectorXd p = problem.start;
+    EXPECT_TRUE(single.solve(problem.system, problem.rhs, p));
+    return p;
+  };
+  const Eigen::VectorXd by_minimum_degree = solve();
+  const double error_m = (by_minimum_degree - exact).lpNorm<Eigen::Infinity>();
+  EXPECT_LT(error_m, 1e-5 * scale_m);
+  EXPECT_GT(error_m, 0.0);  // it did sweep in float
+  for (int k = 1; k < PdDirectSolver::solves_before_nested_dissection; ++k) solve();
+  std::array<Eigen::VectorXd, 2> results;
+  for (int threads = 1; threads <= 2; ++threads) {
+    const test::ScopedThreadCount count(threads);
+    results[threads - 1] = solve();
+  }
+  EXPECT_TRUE(single.nested_dissection());
+  EXPECT_LT((results[0] - exact).lpNorm<Eigen::Infinity>(), 1e-5 * scale_m);
+  EXPECT_TRUE((results[0].array() == results[1].array()).all());
+  for (int i = 0; i < problem.model.particle_count(); ++i) {  // pinned ones untouched
+    if (problem.model.pinned[i]) {
+      EXPECT_EQ(results[0].segment<3>(3 * i), problem.start.segment<3>(3 * i));
+    }
+  }
+  // a copy keeps the precision: it sweeps in float too
+  PdDirectSolver copy = single;
+  Eigen::VectorXd p = problem.start;
+  EXPECT_TRUE(copy.solve(problem.system, problem.rhs, p));
+  EXPECT_TRUE((p.array() == by_minimum_degree.array()).all());
+}
+
 TEST(PdSystem, RebuildsOnlyWhenTheModelOrTheTimeStepChanges) {
   State state;
   SpringModel model = test::grid_model(6, 5, 0.05, 0.002, 200.0, 0.0, state);
