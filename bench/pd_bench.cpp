@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "solver/integrators/projective_dynamics.hpp"
+#include "solver/pd/pd_direct_solver.hpp"
 #include "solver/pd/pd_iterative_solvers.hpp"
 #include "solver/pd/pd_system.hpp"
 
@@ -211,6 +212,24 @@ void BM_JacobiSweepPrecision(benchmark::State& bench) {
   bench.counters["bytes_per_scalar"] = sizeof(Scalar);
 }
 
+/// One solve with the prefactorised PD matrix (nested dissection, as a settled factor is), in double
+/// (PD direct's global step) or float (the minimisers' preconditioner), one thread.
+template <SolvePrecision precision>
+void BM_DirectSolve(benchmark::State& bench) {
+  const GridSystem grid_system(static_cast<int>(bench.range(0)));
+  omp_set_num_threads(1);
+  PdDirectSolver direct;
+  direct.set_precision(precision);
+  const Eigen::VectorXd c = grid_system.system.diagonal.replicate<3, 1>().reshaped<Eigen::RowMajor>().cwiseProduct(grid_system.state.x);
+  Eigen::VectorXd p = grid_system.state.x;
+  while (!direct.nested_dissection()) direct.solve(grid_system.system, c, p);
+  for (auto _ : bench) {
+    direct.solve(grid_system.system, c, p);
+    benchmark::DoNotOptimize(p.data());
+  }
+  bench.counters["particles"] = grid_system.model.particle_count();
+}
+
 void side_arguments(benchmark::internal::Benchmark* b) {
   b->ArgName("side");
   for (int side : {128, 256, 512, 1024}) b->Arg(side);
@@ -234,6 +253,18 @@ BENCHMARK(BM_JacobiSweepPrecision<float>)
     ->Apply(local_arguments)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_DirectSolve<SolvePrecision::exact>)
+    ->ArgName("side")
+    ->Arg(81)
+    ->Arg(128)
+    ->Arg(256)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DirectSolve<SolvePrecision::single>)
+    ->ArgName("side")
+    ->Arg(81)
+    ->Arg(128)
+    ->Arg(256)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LocalStepAndRhs)->Apply(local_arguments)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
