@@ -45,6 +45,7 @@ RenderedRun render_frames(const std::vector<RenderFrame>& frames, const RenderSe
     scene.pinned = frames[k].pinned;
     scene.face_strain = frames[k].face_strain;
     scene.face_level = frames[k].face_level;
+    scene.face_sizing_term = frames[k].face_sizing_term;
     scene.obstacles = frames[k].obstacles;
     scene.ground_height_m = frames[k].ground_height_m;
     char name[32];

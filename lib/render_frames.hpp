@@ -20,8 +20,9 @@ struct RenderFrame {
   std::vector<std::uint8_t> pinned;  ///< #V, 1 for pinned particles; may be empty
   std::vector<float> face_strain;    ///< #F mean edge strain; may be empty (dimensionless)
   // the two below are brace-initialised so that frames listed without them stay -Wextra clean
-  std::vector<IndexedMesh> obstacles{};     ///< closed meshes, where they are at the frame's time
-  std::vector<float> face_level{};  ///< #F refinement level, log2(A_input / A); may be empty
+  std::vector<IndexedMesh> obstacles{};   ///< closed meshes, where they are at the frame's time
+  std::vector<float> face_level{};        ///< #F refinement level, log2(A_input / A); may be empty
+  std::vector<float> face_sizing_term{};  ///< #F SizingTerm that held the face; may be empty
   std::optional<double> ground_height_m{};  ///< height (z, m) of a floor plane, if any
   int frame{0};  ///< the frame of the run it shows, which names its image: frame_NNNNN.png
 };

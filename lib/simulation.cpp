@@ -105,6 +105,7 @@ RenderFrame snapshot(const ClothComplex& lcc, const std::vector<Obstacle>& obsta
                      double time_s) {
   RenderFrame frame{current_mesh(lcc), {}, face_edge_strain(lcc)};
   frame.face_level = face_refinement_level(lcc);
+  frame.face_sizing_term = face_sizing_term(lcc);
   frame.pinned.resize(frame.mesh.vertices.size());
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     frame.pinned[v->info().index_at_last_compile] = v->info().pinned ? 1 : 0;

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "topology/kernel.hpp"
+#include "topology/refinement_options.hpp"
 
 namespace tissu {
 
@@ -91,6 +92,8 @@ struct FaceRest {
   /// The sizing field at the last adaptation pass: 1 / (target edge length)^2 in rest space
   /// (1/m^2), sizing_field.hpp. Splits copy it to both halves until the next pass.
   double sizing_per_m2 = 0.0;
+  /// The term that set sizing_per_m2 at that pass, none where it lets coarsening merge the face.
+  SizingTerm sizing_term = SizingTerm::none;
 };
 
 struct ClothItems {

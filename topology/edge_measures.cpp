@@ -61,4 +61,13 @@ std::vector<float> face_refinement_level(const ClothComplex& lcc) {
   return level;
 }
 
+std::vector<float> face_sizing_term(const ClothComplex& lcc) {
+  std::vector<float> term;
+  term.reserve(lcc.attributes<2>().size());
+  for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    term.push_back(static_cast<float>(lcc.info<2>(d).sizing_term));
+  }
+  return term;
+}
+
 }  // namespace tissu

@@ -30,4 +30,9 @@ std::vector<float> face_edge_strain(const ClothComplex& lcc);
 /// without an input area.
 std::vector<float> face_refinement_level(const ClothComplex& lcc);
 
+/// Per face, in the same order, the sizing term that held it at the last adaptation pass
+/// (FaceRest::sizing_term) as its SizingTerm value: 0 none, 1 curvature, 2 velocity, 3 strain,
+/// 4 obstacles, 5 maximum edge length.
+std::vector<float> face_sizing_term(const ClothComplex& lcc);
+
 }  // namespace tissu

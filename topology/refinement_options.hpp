@@ -3,7 +3,20 @@
 /// When and how far the cloth is refined: the terms of the sizing field (sizing_field.hpp) and the
 /// bounds on edge lengths and particles. CGAL-free.
 
+#include <cstdint>
+
 namespace tissu {
+
+/// The term of the sizing field (sizing_field.hpp) that sets a face's target edge length where it
+/// holds the face (else none: the field would let coarsening merge the face back).
+enum class SizingTerm : std::uint8_t {
+  none,             ///< no term asks for cells this fine
+  curvature,        ///< curvature relative to rest, now
+  velocity,         ///< curvature the velocities make `lookahead` ahead, above today's
+  strain,           ///< an edge strained or compressed past the threshold
+  obstacles,        ///< an obstacle close under a face at an angle, or curved
+  max_edge_length,  ///< the maximum edge length alone
+};
 
 struct RefinementOptions {
   /// Strain term: faces with an edge whose engineering strain |l / l0 - 1| exceeds this

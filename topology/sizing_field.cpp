@@ -45,23 +45,31 @@ Eigen::Vector3d centroid(const std::array<Eigen::Vector3d, 3>& c) {
   return (c[0] + c[1] + c[2]) / 3.0;
 }
 
-/// Curvature (1/m) of the dart's interior edge relative to rest: |theta - theta0| / delta0, also at
-/// x + lookahead v when lookahead_s > 0 (the larger).
-double relative_curvature(const ClothComplex& lcc, Dart_const_handle d, double lookahead_s) {
+/// Curvature (1/m) of the dart's interior edge relative to rest, |theta - theta0| / delta0, now
+/// and at x + lookahead v (0 when lookahead_s is 0).
+struct RelativeCurvature {
+  double now_per_m = 0.0;
+  double ahead_per_m = 0.0;
+};
+
+RelativeCurvature relative_curvature(const ClothComplex& lcc, Dart_const_handle d,
+                                     double lookahead_s) {
   const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
   const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
+  const double delta_m =
+      (centroid(corners(lcc, d, rest)) - centroid(corners(lcc, lcc.opposite<2>(d), rest))).norm();
+  if (!(delta_m > 0.0)) return {};
   const double rest_angle = signed_dihedral(lcc, d, rest);
-  double turn = std::abs(wrapped(signed_dihedral(lcc, d, now) - rest_angle));
+  RelativeCurvature kappa;
+  kappa.now_per_m = std::abs(wrapped(signed_dihedral(lcc, d, now) - rest_angle)) / delta_m;
   if (lookahead_s > 0.0) {
     const auto ahead = [&](Dart_const_handle e) {
       return Eigen::Vector3d(to_eigen(lcc.point(e)) +
                              lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
     };
-    turn = std::max(turn, std::abs(wrapped(signed_dihedral(lcc, d, ahead) - rest_angle)));
+    kappa.ahead_per_m = std::abs(wrapped(signed_dihedral(lcc, d, ahead) - rest_angle)) / delta_m;
   }
-  const double delta_m =
-      (centroid(corners(lcc, d, rest)) - centroid(corners(lcc, lcc.opposite<2>(d), rest))).norm();
-  return delta_m > 0.0 ? turn / delta_m : 0.0;
+  return kappa;
 }
 
 double longest_rest_edge_m(const ClothComplex& lcc, Dart_const_handle d) {
@@ -129,26 +137,65 @@ double obstacle_term(const ClothComplex& lcc, Dart_const_handle d,
   return sagitta_scale * sum / 3.0;
 }
 
+/// Each term's share of a face's sizing (1/m^2): the largest over its edges for the edge terms.
+struct TermShares {
+  double curvature = 0.0;
+  double velocity = 0.0;  ///< what looking ahead adds to the curvature term
+  double strain = 0.0;
+  double obstacles = 0.0;
+};
+
+/// The term with the largest share, or the maximum edge length when its floor is above them all;
+/// none where even the face's parent, of longest edge sqrt(2) L (bisection halves a right
+/// triangle at its hypotenuse), would be under half the target: 2 L^2 sizing < 1/4, where
+/// coarsening at the default hysteresis (0.5) may merge the face back.
+SizingTerm leading_term(const TermShares& shares, double floor_per_m2, double sizing_per_m2,
+                        double longest_m) {
+  if (2.0 * longest_m * longest_m * sizing_per_m2 < 0.25) return SizingTerm::none;
+  const std::array<std::pair<double, SizingTerm>, 5> terms{{
+      {shares.curvature, SizingTerm::curvature},
+      {shares.velocity, SizingTerm::velocity},
+      {shares.strain, SizingTerm::strain},
+      {shares.obstacles, SizingTerm::obstacles},
+      {floor_per_m2, SizingTerm::max_edge_length},
+  }};
+  return std::max_element(terms.begin(), terms.end(),
+                          [](const auto& a, const auto& b) { return a.first < b.first; })
+      ->second;
+}
+
 }  // namespace
 
 void compute_sizing(ClothComplex& lcc, const RefinementOptions& o, const SizingInputs& inputs) {
   for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
     f->info().sizing_per_m2 = 0.0;
   }
+  std::unordered_map<const void*, TermShares> shares;
+  shares.reserve(lcc.attributes<2>().size());
   // curvature and strain: per face, the largest over its edges
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     const bool interior = !lcc.is_free<2>(d);
-    double curvature_term = 0.0;  // (kappa / angle)^2 (1/m^2)
+    double now_term = 0.0;    // (kappa now / angle)^2 (1/m^2)
+    double ahead_term = 0.0;  // (kappa ahead / angle)^2 (1/m^2)
     if (o.curvature_threshold_rad > 0.0 && interior) {
-      const double over = relative_curvature(lcc, d, o.lookahead_s) / o.curvature_threshold_rad;
-      curvature_term = over * over;
+      const RelativeCurvature kappa = relative_curvature(lcc, d, o.lookahead_s);
+      const double now_over = kappa.now_per_m / o.curvature_threshold_rad;
+      const double ahead_over = kappa.ahead_per_m / o.curvature_threshold_rad;
+      now_term = now_over * now_over;
+      ahead_term = ahead_over * ahead_over;
     }
+    const double curvature_term = std::max(now_term, ahead_term);
     const double strain_over =
         o.strain_threshold > 0.0 ? edge_strain(lcc, d) / o.strain_threshold : 0.0;
     auto raise = [&](Dart_handle side) {
       const double face_m = longest_rest_edge_m(lcc, side);
+      const double strain_term = strain_over * strain_over / (face_m * face_m);
       double& sizing = lcc.info<2>(side).sizing_per_m2;
-      sizing = std::max(sizing, curvature_term + strain_over * strain_over / (face_m * face_m));
+      sizing = std::max(sizing, curvature_term + strain_term);
+      TermShares& share = shares[&*lcc.attribute<2>(side)];
+      share.curvature = std::max(share.curvature, now_term);
+      share.velocity = std::max(share.velocity, curvature_term - now_term);
+      share.strain = std::max(share.strain, strain_term);
     };
     raise(d);
     if (interior) raise(lcc.opposite<2>(d));
@@ -164,9 +211,15 @@ void compute_sizing(ClothComplex& lcc, const RefinementOptions& o, const SizingI
   const double floor_per_m2 =
       o.max_edge_length_m > 0.0 ? 1.0 / (o.max_edge_length_m * o.max_edge_length_m) : 0.0;
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
-    double& sizing = lcc.info<2>(d).sizing_per_m2;
-    if (obstacles && lcc.darts_of_orbit<1>(d).size() == 3) sizing += obstacle_term(lcc, d, planes);
-    sizing = std::max(sizing, floor_per_m2);
+    FaceRest& face = lcc.info<2>(d);
+    TermShares& share = shares[&*lcc.attribute<2>(d)];
+    if (obstacles && lcc.darts_of_orbit<1>(d).size() == 3) {
+      share.obstacles = obstacle_term(lcc, d, planes);
+      face.sizing_per_m2 += share.obstacles;
+    }
+    face.sizing_per_m2 = std::max(face.sizing_per_m2, floor_per_m2);
+    face.sizing_term =
+        leading_term(share, floor_per_m2, face.sizing_per_m2, longest_rest_edge_m(lcc, d));
   }
 }
 

@@ -33,7 +33,11 @@ struct SizingInputs {
 ///   face's corners above the tangent plane of the obstacle nearest each corner (at least the
 ///   obstacle's thickness), grad in rest space: zero for cloth lying flat on a floor; on a curved
 ///   obstacle, faces whose chords sag by about the thickness (ARCSim's metric / 16);
-/// then at least 1 / max_edge_length_m^2 when a maximum is set.
+/// then at least 1 / max_edge_length_m^2 when a maximum is set. Also sets FaceRest::sizing_term:
+/// the term with the largest share (an edge term's largest over the face's edges; for velocity,
+/// what looking ahead adds to the curvature term), or none where the face's parent (longest edge
+/// sqrt(2) L) would be under half the target (2 L^2 sizing < 1/4): coarsening at the default
+/// hysteresis may merge it back.
 void compute_sizing(ClothComplex& lcc, const RefinementOptions& options,
                     const SizingInputs& inputs);
 

@@ -40,6 +40,10 @@ void check_scene(const RenderScene& scene) {
   if (!scene.face_level.empty() && scene.face_level.size() != mesh.faces.size())
     throw std::invalid_argument("render scene: " + std::to_string(scene.face_level.size()) +
                                 " face levels for " + std::to_string(mesh.faces.size()) + " faces");
+  if (!scene.face_sizing_term.empty() && scene.face_sizing_term.size() != mesh.faces.size())
+    throw std::invalid_argument("render scene: " + std::to_string(scene.face_sizing_term.size()) +
+                                " face sizing terms for " + std::to_string(mesh.faces.size()) +
+                                " faces");
 }
 
 void append(std::vector<float>& out, const Eigen::Vector3d& p) {
@@ -58,8 +62,9 @@ ClothGeometry cloth_geometry(const RenderScene& scene, ColorMode mode) {
   std::vector<std::pair<int, int>> edges;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const std::vector<int>& face = mesh.faces[f];
-    const std::vector<float>& values =
-        mode == ColorMode::level ? scene.face_level : scene.face_strain;
+    const std::vector<float>& values = mode == ColorMode::level         ? scene.face_level
+                                       : mode == ColorMode::sizing_term ? scene.face_sizing_term
+                                                                        : scene.face_strain;
     const float strain = values.empty() ? 0.0f : values[f];
     for (std::size_t i = 1; i + 1 < face.size(); ++i) {
       for (int v : {face[0], face[i], face[i + 1]}) {

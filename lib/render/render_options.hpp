@@ -12,6 +12,7 @@ enum class ColorMode {
   shaded,  ///< front_color on the front side (counter-clockwise faces), back_color behind
   strain,  ///< per-face strain on a blue-white-red diverging map, both sides
   level,   ///< per-face refinement level, one colour per level (light input faces, darker finer)
+  sizing_term,  ///< per face, which term of the sizing field holds it fine, one colour per term
 };
 
 struct RenderOptions {

@@ -21,6 +21,9 @@ struct RenderScene {
   std::vector<float> face_strain;
   /// #F, the refinement level of each face for ColorMode::level, log2(A_input / A); empty: all 0.
   std::vector<float> face_level;
+  /// #F, for ColorMode::sizing_term, the sizing field's term that held each face at the last
+  /// adaptation pass, as a SizingTerm value (0 none to 5 maximum edge length); empty: all 0.
+  std::vector<float> face_sizing_term;
   std::optional<double> ground_height_m;  ///< height (z, m) of a horizontal ground plane, if any
   /// Rigid obstacles, not owned: closed triangle (or polygon) meshes, counter-clockwise seen from
   /// outside, positions (m) where they are at this frame's time. Empty: none.

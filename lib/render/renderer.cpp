@@ -295,9 +295,10 @@ struct Renderer::State {
     draw(gl, obstacles, GL_TRIANGLES);
 
     upload(gl, cloth, geometry.triangles, cloth_vertex_floats);
-    const int mode = o.color_mode == ColorMode::strain  ? 1
-                     : o.color_mode == ColorMode::level ? 3
-                                                        : 0;
+    const int mode = o.color_mode == ColorMode::strain        ? 1
+                     : o.color_mode == ColorMode::level       ? 3
+                     : o.color_mode == ColorMode::sizing_term ? 4
+                                                              : 0;
     gl.Uniform1i(uniform(surface_program, "u_mode"), mode);
     set_color(surface_program, "u_front_color", o.front_color);
     set_color(surface_program, "u_back_color", o.back_color);

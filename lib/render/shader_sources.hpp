@@ -24,8 +24,9 @@ void main() {
 )";
 
 /// u_mode: 0 two-sided colours (front or back by gl_FrontFacing), 1 strain colour map, 2 ground
-/// (fades into the background away from u_ground_center). Lights are unit world directions
-/// towards the light; the normal is flipped on back faces so both sides are lit.
+/// (fades into the background away from u_ground_center), 3 refinement level, 4 sizing term. Lights
+/// are unit world directions towards the light; the normal is flipped on back faces so both sides
+/// are lit.
 inline constexpr const char* surface_fragment = R"(#version 330 core
 in vec3 v_position;
 in vec3 v_normal;
@@ -59,6 +60,16 @@ vec3 level_color(float level) {
   return colors[int(clamp(floor(level + 0.5), 0.0, 5.0))];
 }
 
+// sizing term (SizingTerm): none light grey, curvature blue, velocity (curvature ahead) sky blue,
+// strain vermillion, obstacles bluish green, maximum edge length reddish purple (Okabe & Ito's
+// colour-blind-safe palette)
+vec3 term_color(float term) {
+  const vec3 colors[6] = vec3[6](vec3(0.85, 0.85, 0.85), vec3(0.00, 0.45, 0.70),
+                                 vec3(0.34, 0.71, 0.91), vec3(0.84, 0.37, 0.00),
+                                 vec3(0.00, 0.62, 0.45), vec3(0.80, 0.47, 0.65));
+  return colors[int(clamp(floor(term + 0.5), 0.0, 5.0))];
+}
+
 void main() {
   vec3 n = v_normal;
   if (dot(n, n) < 1e-24) n = cross(dFdx(v_position), dFdy(v_position));
@@ -76,6 +87,7 @@ void main() {
   }
   vec3 base = u_mode == 1   ? strain_color(v_strain)
               : u_mode == 3 ? level_color(v_strain)
+              : u_mode == 4 ? term_color(v_strain)
                             : (gl_FrontFacing ? u_front_color : u_back_color);
   float specular = pow(max(dot(n, normalize(u_key_light + view)), 0.0), 40.0);
   vec3 color = base * (0.30 + 0.60 * key + 0.15 * fill) + vec3(0.07 * specular);

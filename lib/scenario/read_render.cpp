@@ -44,10 +44,12 @@ RenderSettings read_render(JsonObjectReader render) {
                     std::to_string(o.samples) + " = " + std::to_string(samples));
   }
   o.wireframe = render.boolean_or("wireframe", o.wireframe);
-  const std::string mode = render.choice_or("color_mode", "shaded", {"shaded", "strain", "level"});
-  o.color_mode = mode == "strain"  ? ColorMode::strain
-                 : mode == "level" ? ColorMode::level
-                                   : ColorMode::shaded;
+  const std::string mode =
+      render.choice_or("color_mode", "shaded", {"shaded", "strain", "level", "sizing"});
+  o.color_mode = mode == "strain"   ? ColorMode::strain
+                 : mode == "level"  ? ColorMode::level
+                 : mode == "sizing" ? ColorMode::sizing_term
+                                    : ColorMode::shaded;
   o.strain_range = render.number_or("strain_range", o.strain_range, positive(""));
   o.show_pins = render.boolean_or("show_pins", o.show_pins);
   r.every = render.integer_or("every", 1, 1, std::numeric_limits<int>::max());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render_test_support.hpp"
+#include "topology/refinement_options.hpp"
 
 namespace tissu {
 namespace {
@@ -189,6 +190,35 @@ TEST(Renderer, LevelModeColoursFinerFacesDarker) {
   EXPECT_GT(input.sum(), once.sum() + 0.2f) << input.transpose() << " / " << once.transpose();
   EXPECT_GT(once.sum(), finer.sum() + 0.2f) << once.transpose() << " / " << finer.transpose();
   EXPECT_GT(input.x(), input.z()) << input.transpose();  // warm, not the strain map's white
+}
+
+TEST(Renderer, SizingModeGivesEachTermItsOwnColour) {
+  RenderOptions options = small_options();
+  options.color_mode = ColorMode::sizing_term;
+  Renderer renderer(options);
+  const IndexedMesh mesh = test::square_mesh(1.0, 2);
+  RenderScene scene = test::scene_of(mesh);
+  scene.face_level.assign(mesh.faces.size(), 3.0f);  // ignored in this mode
+  const auto centre_with_term = [&](SizingTerm term) {
+    scene.face_sizing_term.assign(mesh.faces.size(), static_cast<float>(term));
+    return color_at(renderer.render(scene, square_camera()), width / 2 + 10, height / 2 + 10);
+  };
+  const SizingTerm terms[] = {SizingTerm::none,      SizingTerm::curvature,
+                              SizingTerm::velocity,  SizingTerm::strain,
+                              SizingTerm::obstacles, SizingTerm::max_edge_length};
+  std::vector<Eigen::Vector3f> colours;
+  for (const SizingTerm term : terms) colours.push_back(centre_with_term(term));
+  const Eigen::Vector3f none = colours[0];
+  EXPECT_LT(none.maxCoeff() - none.minCoeff(), 0.03f) << none.transpose();     // grey
+  EXPECT_GT(colours[1].z(), 2.0f * colours[1].x()) << colours[1].transpose();  // curvature blue
+  EXPECT_GT(colours[3].x(), 2.0f * colours[3].z()) << colours[3].transpose();  // strain warm
+  for (std::size_t a = 0; a < colours.size(); ++a) {
+    for (std::size_t b = a + 1; b < colours.size(); ++b) {
+      EXPECT_GT((colours[a] - colours[b]).cwiseAbs().maxCoeff(), 0.1f)
+          << "terms " << a << " and " << b << ": " << colours[a].transpose() << " / "
+          << colours[b].transpose();
+    }
+  }
 }
 
 TEST(Renderer, MarksPinnedParticles) {

@@ -127,6 +127,64 @@ TEST_F(SizingFieldTest, TheVelocityTermRefinesAFoldBeforeItForms) {
   test::expect_valid_with_mass(lcc, expected_mass_kg());
 }
 
+/// How many faces of `lcc` the sizing field last held by `term`.
+int faces_held_by(const ClothComplex& lcc, SizingTerm term) {
+  int count = 0;
+  for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
+    count += f->info().sizing_term == term ? 1 : 0;
+  }
+  return count;
+}
+
+TEST_F(SizingFieldTest, EachFaceNamesTheTermThatHoldsIt) {
+  build_cloth_complex(make_grid_mesh(sheet()), density_kg_per_m2, springs, lcc);
+  const int faces = static_cast<int>(lcc.attributes<2>().size());
+  RefinementOptions options = curvature_only(0.5);
+  options.strain_threshold = 0.1;
+  options.lookahead_s = 0.1;
+  compute_sizing(lcc, options, {});
+  EXPECT_EQ(faces_held_by(lcc, SizingTerm::none), faces) << "flat and at rest";
+
+  // the right part turns about the grid line x = 0.95 m at 5 rad/s: only the velocity term sees
+  // the fold that will form there
+  const double hinge_x_m = 0.95;
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const double arm_m = v->point().x() - hinge_x_m;
+    if (arm_m > 0.0) v->info().velocity = Vector3(0.0, 5.0 * arm_m, 0.0);
+  }
+  compute_sizing(lcc, options, {});
+  const int ahead = faces_held_by(lcc, SizingTerm::velocity);
+  EXPECT_GT(ahead, 0);
+  EXPECT_EQ(faces_held_by(lcc, SizingTerm::none), faces - ahead);
+
+  // folded there by 90 degrees now: the curvature term holds the faces along the crease
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& p = v->point();
+    if (p.x() > hinge_x_m) v->point() = Point3(hinge_x_m, p.y() + (p.x() - hinge_x_m), p.z());
+    v->info().velocity = Vector3(0.0, 0.0, 0.0);
+  }
+  compute_sizing(lcc, options, {});
+  const int creased = faces_held_by(lcc, SizingTerm::curvature);
+  EXPECT_GT(creased, 0);
+  EXPECT_LE(creased, faces / 3);  // a band along the crease
+  EXPECT_EQ(faces_held_by(lcc, SizingTerm::velocity), 0);
+
+  // flat again, stretched by 25 % along x: every face has a strained edge
+  build_cloth_complex(make_grid_mesh(sheet()), density_kg_per_m2, springs, lcc);
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& p = v->point();
+    v->point() = Point3(0.2 + 1.25 * (p.x() - 0.2), p.y(), p.z());
+  }
+  compute_sizing(lcc, options, {});
+  EXPECT_EQ(faces_held_by(lcc, SizingTerm::strain), faces);
+
+  // at rest with a maximum edge length under the cells' size: that floor holds them all
+  build_cloth_complex(make_grid_mesh(sheet()), density_kg_per_m2, springs, lcc);
+  options.max_edge_length_m = 0.1;
+  compute_sizing(lcc, options, {});
+  EXPECT_EQ(faces_held_by(lcc, SizingTerm::max_edge_length), faces);
+}
+
 TEST_F(SizingFieldTest,
        TheObstacleTermRefinesWhereTheClothComesDownOnAnObstacleNotWhereItLiesFlat) {
   // the sheet lies horizontal (the x-y plane), 2 mm above a floor: flat on it, nothing to refine
