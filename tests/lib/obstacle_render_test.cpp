@@ -1,5 +1,6 @@
 // Obstacles in rendered images: a tessellated sphere fills the pixels its silhouette covers, and a
-// run draws its obstacles where they have moved to at each image's time, on a floor plane.
+// run draws its obstacles where they have moved to at each image's time, on a floor plane. Also a
+// run's faces coloured by the sizing term that refined them.
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
@@ -145,6 +146,44 @@ TEST(ObstacleRender, ARunDrawsItsObstaclesWhereTheyHaveMovedAndAFloorAsTheGround
     EXPECT_LT((floor - defaults.ground_color).norm(), 0.15f) << floor.transpose();
     EXPECT_GT((floor - defaults.background_color).norm(), 0.1f) << floor.transpose();
   }
+}
+
+TEST(SizingRender, AnAdaptiveRunColoursItsFacesByTheTermThatRefinedThem) {
+  // 25 cm cells, refined until no edge is longer than 20 cm: after the first adaptation pass the
+  // maximum edge length holds every face
+  const Scenario scenario = parse_scenario(R"({
+    "cloth": { "grid": { "size": [1, 1], "resolution": [4, 4] }, "density": 0.2,
+               "springs": { "structural": { "stiffness": 200, "damping": 0.1 } } },
+    "pins": [ { "side": "top" } ],
+    "adaptive": { "max_edge_length": 0.2, "min_edge_length": 0.05 },
+    "simulation": { "frames": 2, "frame_rate": 30, "substeps": 2 },
+    "render": { "width": 160, "height": 120, "every": 2, "video": false, "color_mode": "sizing",
+                "camera": { "position": [0.5, -3, 0.5], "target": [0.5, 0, 0.5] } }
+  })",
+                                           "sizing_render.json");
+  RunOptions run;
+  run.output_dir = test::fresh_temp_dir("sizing_render");
+  const RunResult result = run_scenario(scenario, run);
+  ASSERT_TRUE(result.ok) << result.failure;
+  ASSERT_EQ(result.images, 2);
+  const auto centre_of = [&](const char* name) {
+    Image image;
+    int channels = 0;
+    const std::string file = (run.output_dir / name).string();
+    unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
+    EXPECT_NE(data, nullptr) << file;
+    if (!data) return Eigen::Vector3f(Eigen::Vector3f::Zero());
+    image.rgb.assign(data, data + 3 * image.width * image.height);
+    stbi_image_free(data);
+    const Eigen::Vector2i px = pixel_of(*scenario.render.camera, 160, 120, {0.5, 0.0, 0.45});
+    return color_at(image, px.x(), px.y());
+  };
+  // lib/render/shader_sources.hpp's term_color(): none light grey, max_edge_length reddish purple
+  const Eigen::Vector3f none(0.85f, 0.85f, 0.85f), max_edge_length(0.80f, 0.47f, 0.65f);
+  const Eigen::Vector3f before = centre_of("frame_00000.png");  // before any pass
+  const Eigen::Vector3f after = centre_of("frame_00002.png");
+  EXPECT_TRUE(is_shade_of(before, none)) << before.transpose();
+  EXPECT_TRUE(is_shade_of(after, max_edge_length)) << after.transpose();
 }
 
 }  // namespace
