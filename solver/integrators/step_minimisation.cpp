@@ -20,7 +20,7 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   if (!workspace.inertial.allFinite()) return false;
   if (use_pd_matrix) {
     update_pd_system(model, h, workspace.system);
-    // a preconditioner, so float sweeps: 10 to 16 % faster steps (docs/benchmarks.md)
+    // a preconditioner need not be exact: float sweeps, 3 to 28 % faster (docs/benchmarks.md)
     workspace.pd_matrix.set_precision(SolvePrecision::single);
     if (!workspace.pd_matrix.factorize(workspace.system)) return false;
   }

@@ -25,6 +25,18 @@ Eigen::Vector3f color_at(const Image& image, int x, int y) {
   return Eigen::Vector3f(p[0], p[1], p[2]) / 255.0f;
 }
 
+/// The RGB image in a PNG file; empty (0 x 0) if it cannot be read.
+Image read_png(const std::filesystem::path& file) {
+  Image image;
+  int channels = 0;
+  unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
+  EXPECT_NE(data, nullptr) << file;
+  if (!data) return Image{};
+  image.rgb.assign(data, data + 3 * image.width * image.height);
+  stbi_image_free(data);
+  return image;
+}
+
 /// Whether `c` is `base` lit, that is darkened or brightened by a factor in [0.25, 1.1], give or
 /// take a little specular white: how the renderer shades a surface of colour `base`.
 bool is_shade_of(const Eigen::Vector3f& c, const Eigen::Vector3f& base) {
@@ -116,16 +128,7 @@ TEST(ObstacleRender, ARunDrawsItsObstaclesWhereTheyHaveMovedAndAFloorAsTheGround
   ASSERT_TRUE(result.ok) << result.failure;
   ASSERT_EQ(result.images, 2);  // frames 0 and 2: t = 0 and 1/15 s, the ball 0.4 m higher
 
-  const auto read = [&](const char* name) {
-    Image image;
-    int channels = 0;
-    const std::string file = (run.output_dir / name).string();
-    unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
-    EXPECT_NE(data, nullptr) << file;
-    if (data) image.rgb.assign(data, data + 3 * image.width * image.height);
-    stbi_image_free(data);
-    return image;
-  };
+  const auto read = [&](const char* name) { return read_png(run.output_dir / name); };
   const Image first = read("frame_00000.png"), last = read("frame_00002.png");  // by frame
   ASSERT_EQ(first.width, 160);
   ASSERT_EQ(last.width, 160);
@@ -167,16 +170,9 @@ TEST(SizingRender, AnAdaptiveRunColoursItsFacesByTheTermThatRefinedThem) {
   ASSERT_TRUE(result.ok) << result.failure;
   ASSERT_EQ(result.images, 2);
   const auto centre_of = [&](const char* name) {
-    Image image;
-    int channels = 0;
-    const std::string file = (run.output_dir / name).string();
-    unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
-    EXPECT_NE(data, nullptr) << file;
-    if (!data) return Eigen::Vector3f(Eigen::Vector3f::Zero());
-    image.rgb.assign(data, data + 3 * image.width * image.height);
-    stbi_image_free(data);
+    const Image image = read_png(run.output_dir / name);
     const Eigen::Vector2i px = pixel_of(*scenario.render.camera, 160, 120, {0.5, 0.0, 0.45});
-    return color_at(image, px.x(), px.y());
+    return image.width == 160 ? color_at(image, px.x(), px.y()) : Eigen::Vector3f::Zero().eval();
   };
   // lib/render/shader_sources.hpp's term_color(): none light grey, max_edge_length reddish purple
   const Eigen::Vector3f none(0.85f, 0.85f, 0.85f), max_edge_length(0.80f, 0.47f, 0.65f);
