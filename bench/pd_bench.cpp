@@ -212,15 +212,17 @@ void BM_JacobiSweepPrecision(benchmark::State& bench) {
   bench.counters["bytes_per_scalar"] = sizeof(Scalar);
 }
 
-/// One solve with the prefactorised PD matrix (nested dissection, as a settled factor is), in double
-/// (PD direct's global step) or float (the minimisers' preconditioner), one thread.
+/// One solve with the prefactorised PD matrix (nested dissection, as a settled factor is), in
+/// double (PD direct's global step) or float (the minimisers' preconditioner), one thread.
 template <SolvePrecision precision>
 void BM_DirectSolve(benchmark::State& bench) {
   const GridSystem grid_system(static_cast<int>(bench.range(0)));
   omp_set_num_threads(1);
   PdDirectSolver direct;
   direct.set_precision(precision);
-  const Eigen::VectorXd c = grid_system.system.diagonal.replicate<3, 1>().reshaped<Eigen::RowMajor>().cwiseProduct(grid_system.state.x);
+  const Eigen::VectorXd c =
+      grid_system.system.diagonal.replicate<3, 1>().reshaped<Eigen::RowMajor>().cwiseProduct(
+          grid_system.state.x);
   Eigen::VectorXd p = grid_system.state.x;
   while (!direct.nested_dissection()) direct.solve(grid_system.system, c, p);
   for (auto _ : bench) {
