@@ -54,6 +54,7 @@ struct Method {
   PdGlobalSolver global_solver = PdGlobalSolver::direct;
   double tolerance = 0.0;  ///< Newton's or quasi-Newton's tolerance; 0: the default
   NewtonPreconditioner preconditioner = NewtonPreconditioner::multigrid;
+  QuasiNewtonInitialHessian initial_hessian = QuasiNewtonInitialHessian::pd_matrix;
 };
 
 CompiledCloth hanging_sheet(int particles_per_side) {
@@ -87,6 +88,7 @@ SolverParams sheet_params(const Method& method, int steps_per_frame) {
   params.integrator = method.integrator;
   params.pd.global_solver = method.global_solver;
   params.newton.preconditioner = method.preconditioner;
+  params.quasi_newton.initial_hessian = method.initial_hessian;
   if (method.tolerance > 0.0) {
     params.newton.tolerance = params.quasi_newton.tolerance = method.tolerance;
   }
@@ -249,6 +251,14 @@ BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton, Method{Integrator::quasi_newton
     ->Apply(sheet_sizes);
 BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton_tight,  // tolerance 1e-3
                   Method{Integrator::quasi_newton, PdGlobalSolver::direct, 1e-3})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton_multigrid,  // H_0 by V-cycles of the PD matrix
+                  Method{Integrator::quasi_newton, PdGlobalSolver::direct, 0.0,
+                         NewtonPreconditioner::multigrid, QuasiNewtonInitialHessian::pd_multigrid})
+    ->Apply(sheet_sizes);
+BENCHMARK_CAPTURE(BM_HangingSheet, quasi_newton_multigrid_tight,  // and tolerance 1e-3
+                  Method{Integrator::quasi_newton, PdGlobalSolver::direct, 1e-3,
+                         NewtonPreconditioner::multigrid, QuasiNewtonInitialHessian::pd_multigrid})
     ->Apply(sheet_sizes);
 
 /// The demos' settings before issue 16, which the others are compared against.

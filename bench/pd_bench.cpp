@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "solver/integrators/projective_dynamics.hpp"
+#include "solver/multigrid/pd_multigrid.hpp"
 #include "solver/pd/pd_direct_solver.hpp"
 #include "solver/pd/pd_iterative_solvers.hpp"
 #include "solver/pd/pd_system.hpp"
@@ -232,6 +233,25 @@ void BM_DirectSolve(benchmark::State& bench) {
   bench.counters["particles"] = grid_system.model.particle_count();
 }
 
+/// One smoothed-aggregation V-cycle on the same PD matrix (the other initial Hessian of
+/// quasi-Newton), one thread: the hierarchy is built before the timing.
+void BM_MultigridCycle(benchmark::State& bench) {
+  const GridSystem grid_system(static_cast<int>(bench.range(0)));
+  omp_set_num_threads(1);
+  PdMultigrid multigrid;
+  const Eigen::VectorXd c =
+      grid_system.system.diagonal.replicate<3, 1>().reshaped<Eigen::RowMajor>().cwiseProduct(
+          grid_system.state.x);
+  Eigen::VectorXd p = grid_system.state.x;
+  multigrid.prepare(grid_system.model, grid_system.system);
+  for (auto _ : bench) {
+    multigrid.apply(grid_system.model, grid_system.system, c, p);
+    benchmark::DoNotOptimize(p.data());
+  }
+  bench.counters["particles"] = grid_system.model.particle_count();
+  bench.counters["levels"] = multigrid.level_count();
+}
+
 void side_arguments(benchmark::internal::Benchmark* b) {
   b->ArgName("side");
   for (int side : {128, 256, 512, 1024}) b->Arg(side);
@@ -262,6 +282,12 @@ BENCHMARK(BM_DirectSolve<SolvePrecision::exact>)
     ->Arg(256)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DirectSolve<SolvePrecision::single>)
+    ->ArgName("side")
+    ->Arg(81)
+    ->Arg(128)
+    ->Arg(256)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MultigridCycle)
     ->ArgName("side")
     ->Arg(81)
     ->Arg(128)

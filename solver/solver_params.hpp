@@ -101,6 +101,17 @@ struct ProjectiveDynamicsOptions {
 };
 
 /// Minimisation of backward Euler's incremental potential by the quasi-Newton integrator.
+/// L-BFGS's initial inverse Hessian H_0^-1: the PD matrix M/h^2 + L (Liu, Bouaziz & Kavan 2017),
+/// solved exactly or approximately.
+enum class QuasiNewtonInitialHessian {
+  pd_matrix,     ///< its sparse Cholesky factor: an exact solve, whose cost grows with the factor's
+                 ///< fill (17 to 19 times from 81 x 81 to 256 x 256 particles)
+  pd_multigrid,  ///< one smoothed-aggregation V-cycle (pd_multigrid.hpp): near-linear cost, no
+                 ///< factorisation after a remesh; an approximate inverse, with which the
+                 ///< correction test of `tolerance` stops steps early (the stiff sheet at 1e-2
+                 ///< hung 0.77 m above the converged motion): use 1e-3 (docs/benchmarks.md)
+};
+
 struct QuasiNewtonOptions {
   /// the step stops once its last quasi-Newton correction is at most tolerance times the step's
   /// displacement (as NewtonOptions::tolerance), in (0, 1], dimensionless. On stiff cloth this
@@ -110,6 +121,7 @@ struct QuasiNewtonOptions {
   double tolerance = 1e-2;
   int max_iterations = 200;  ///< a step that has not met the tolerance by then is not_converged
   int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
+  QuasiNewtonInitialHessian initial_hessian = QuasiNewtonInitialHessian::pd_matrix;
 };
 
 /// Preconditioner of the conjugate gradient inside each Newton iteration.

@@ -94,6 +94,16 @@ const char* to_string(NewtonPreconditioner preconditioner) {
   return "unknown";
 }
 
+const char* to_string(QuasiNewtonInitialHessian initial_hessian) {
+  switch (initial_hessian) {
+    case QuasiNewtonInitialHessian::pd_matrix:
+      return "pd_matrix";
+    case QuasiNewtonInitialHessian::pd_multigrid:
+      return "pd_multigrid";
+  }
+  return "unknown";
+}
+
 const char* to_string(StepStatus status) {
   switch (status) {
     case StepStatus::ok:

@@ -26,6 +26,9 @@ const char* to_string(PdGlobalSolver solver);
 /// The scenario name of a Newton preconditioner ("multigrid", "pd_matrix").
 const char* to_string(NewtonPreconditioner preconditioner);
 
+/// The scenario name of quasi-Newton's initial Hessian ("pd_matrix", "pd_multigrid").
+const char* to_string(QuasiNewtonInitialHessian initial_hessian);
+
 /// Advances `state` by params.time_step with the chosen integrator. Pinned particles keep their
 /// velocity (zero unless prescribed). On non_finite the state is left as computed (the caller keeps
 /// the last good state); the model is never modified.

@@ -162,9 +162,16 @@ QuasiNewtonOptions read_quasi_newton(JsonObjectReader quasi_newton) {
       quasi_newton.number_or("tolerance", o.tolerance, {0.0, 1.0, true, "a number in (0, 1]"});
   o.max_iterations = quasi_newton.integer_or("max_iterations", o.max_iterations, 1, 100000);
   o.history = quasi_newton.integer_or("history", o.history, 0, 1000);
+  o.initial_hessian =
+      read_named(quasi_newton, "initial_hessian", o.initial_hessian,
+                 {QuasiNewtonInitialHessian::pd_matrix, QuasiNewtonInitialHessian::pd_multigrid});
   quasi_newton.finish();
   return o;
 }
+
+// the loosest quasi-Newton tolerance that follows the converged motion with a V-cycle as the
+// initial Hessian (docs/benchmarks.md, "quasi-Newton's initial Hessian by multigrid")
+constexpr double pd_multigrid_tolerance = 1e-3;
 
 void read_simulation(JsonObjectReader simulation, Scenario& s) {
   // implicit Euler was the default until 2026-12-06: its keys without a named integrator were
@@ -220,6 +227,13 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
   s.solver.pd = read_pd(simulation.optional_object("pd"));
   s.solver.newton = read_newton(simulation.optional_object("newton"));
   s.solver.quasi_newton = read_quasi_newton(simulation.optional_object("quasi_newton"));
+  if (s.solver.quasi_newton.initial_hessian == QuasiNewtonInitialHessian::pd_multigrid &&
+      s.solver.quasi_newton.tolerance > pd_multigrid_tolerance) {
+    s.notes.push_back(simulation.file() + ": " + simulation.key_path("quasi_newton") +
+                      ".initial_hessian: \"pd_multigrid\" stops steps early at tolerances above "
+                      "0.001 (the stiff hanging sheet hung 0.7 m short of its converged motion at "
+                      "0.01); set simulation.quasi_newton.tolerance to 0.001");
+  }
   simulation.finish();
 }
 

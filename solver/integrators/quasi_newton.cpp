@@ -33,20 +33,27 @@ void resize_history(int dofs, int history, QuasiNewtonWorkspace& qn) {
   clear_history(qn);
 }
 
-// preconditioned = H_0^-1 q, the PD matrix on the free particles (pinned rows stay zero)
-void apply_initial_inverse_hessian(const Eigen::VectorXd& q, QuasiNewtonWorkspace& qn) {
+// preconditioned = H_0^-1 q, the PD matrix on the free particles (pinned rows stay zero), solved
+// by its factor or approximated by multigrid
+void apply_initial_inverse_hessian(const SpringModel& model, QuasiNewtonInitialHessian kind,
+                                   const Eigen::VectorXd& q, QuasiNewtonWorkspace& qn) {
+  if (kind == QuasiNewtonInitialHessian::pd_multigrid) {
+    qn.pd_multigrid.apply(model, qn.common.system, q, qn.common.preconditioned);
+    return;
+  }
   qn.common.pd_matrix.solve(qn.common.system, q, qn.common.preconditioned);
 }
 
 // direction = -H^-1 gradient by the L-BFGS two-loop recursion
-void lbfgs_direction(QuasiNewtonWorkspace& qn) {
+void lbfgs_direction(const SpringModel& model, QuasiNewtonInitialHessian kind,
+                     QuasiNewtonWorkspace& qn) {
   const int capacity = static_cast<int>(qn.curvature.size());
   qn.direction = qn.common.gradient;  // q
   for (int n = 0, k = qn.newest_pair; n < qn.stored_pairs; ++n, k = (k + capacity - 1) % capacity) {
     qn.coefficient[k] = qn.curvature[k] * qn.position_changes.col(k).dot(qn.direction);
     qn.direction -= qn.coefficient[k] * qn.gradient_changes.col(k);
   }
-  apply_initial_inverse_hessian(qn.direction, qn);
+  apply_initial_inverse_hessian(model, kind, qn.direction, qn);
   qn.direction = qn.common.preconditioned;  // r
   const int oldest = (qn.newest_pair - qn.stored_pairs + 1 + capacity) % std::max(capacity, 1);
   for (int n = 0, k = oldest; n < qn.stored_pairs; ++n, k = (k + 1) % capacity) {
@@ -83,9 +90,14 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
 
   StepPotential potential;
   double energy_j = 0.0;
+  const bool multigrid = options.initial_hessian == QuasiNewtonInitialHessian::pd_multigrid;
   if (!start_step_minimisation(model, params, state, qn.common, &workspace.obstacle_distances,
-                               potential, energy_j)) {
+                               potential, energy_j, !multigrid)) {
     return StepStatus::non_finite;
+  }
+  if (multigrid) {  // with the PD matrix's factor, start_step_minimisation() prepared it
+    update_pd_system(model, h, qn.common.system);
+    if (!qn.pd_multigrid.prepare(model, qn.common.system)) return StepStatus::non_finite;
   }
   resize_history(3 * particles, options.history, qn);
   const double first_gradient_n = qn.common.gradient.norm();
@@ -94,11 +106,11 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   qn.correction_ratio = 0.0;
   bool converged = first_gradient_n == 0.0;
   while (!converged && qn.iterations < options.max_iterations) {
-    lbfgs_direction(qn);
+    lbfgs_direction(model, options.initial_hessian, qn);
     if (!(qn.common.gradient.dot(qn.direction) <
           0.0)) {  // not a descent direction: restart from H_0
       clear_history(qn);
-      lbfgs_direction(qn);
+      lbfgs_direction(model, options.initial_hessian, qn);
     }
     double trial_energy_j = energy_j;
     if (!backtracking_line_search(model, potential, qn.common.x, qn.common.gradient, energy_j,

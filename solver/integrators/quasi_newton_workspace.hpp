@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/integrators/minimisation_workspace.hpp"
+#include "solver/multigrid/pd_multigrid.hpp"
 
 namespace tissu {
 
@@ -13,6 +14,7 @@ namespace tissu {
 /// (the PD matrix, in `common`) is rebuilt only when the model (its identity) or h changes.
 struct QuasiNewtonWorkspace {
   MinimisationWorkspace common;      ///< potential, iterate, PD matrix (the initial Hessian)
+  PdMultigrid pd_multigrid;          ///< the PD matrix's V-cycle, the other initial Hessian
   Eigen::VectorXd direction;         ///< 3#P the search direction (m)
   Eigen::MatrixXd position_changes;  ///< 3#P x history: s_k = x_{k+1} - x_k (m)
   Eigen::MatrixXd gradient_changes;  ///< 3#P x history: t_k = g_{k+1} - g_k (N)

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "solver/multigrid/greedy_aggregation.hpp"
 #include "solver/parallel.hpp"
 
 namespace tissu {
@@ -14,8 +15,6 @@ namespace {
 // took 40.6, 32.1, 33.7, 28.1 and 31.5 V-cycles per step.
 constexpr int coarsest_nodes = 64;      // a level this small is solved exactly
 constexpr double jacobi_damping = 0.8;  // omega of the damped block-Jacobi smoother
-constexpr int unassigned = -2;
-constexpr int left_out = -1;
 
 // Node i's neighbours: the nodes of its nonzero off-diagonal blocks.
 template <typename Visit>
@@ -25,43 +24,12 @@ void for_each_neighbour(const SymmetricBlockMatrix& matrix, int node, Visit visi
   }
 }
 
-// Vanek et al. 1996's greedy aggregation: a node whose neighbours are all free makes an aggregate
-// with them; the rest join a neighbouring aggregate, or make one with their free neighbours.
-// Nodes without neighbours (pinned particles, identity rows) are left out. Returns the count.
+// Vanek et al. 1996's greedy aggregation of the nodes coupled by nonzero off-diagonal blocks.
+// Returns the count.
 int aggregate_nodes(const SymmetricBlockMatrix& matrix, std::vector<int>& aggregate) {
-  const int nodes = matrix.node_count();
-  aggregate.assign(nodes, unassigned);
-  for (int i = 0; i < nodes; ++i) {
-    bool isolated = true;
-    for_each_neighbour(matrix, i, [&](int) { isolated = false; });
-    if (isolated) aggregate[i] = left_out;
-  }
-  int count = 0;
-  for (int i = 0; i < nodes; ++i) {
-    if (aggregate[i] != unassigned) continue;
-    bool free_ring = true;
-    for_each_neighbour(matrix, i, [&](int j) { free_ring &= aggregate[j] == unassigned; });
-    if (!free_ring) continue;
-    aggregate[i] = count;
-    for_each_neighbour(matrix, i, [&](int j) { aggregate[j] = count; });
-    ++count;
-  }
-  const std::vector<int> first_pass = aggregate;
-  for (int i = 0; i < nodes; ++i) {
-    if (aggregate[i] != unassigned) continue;
-    for_each_neighbour(matrix, i, [&](int j) {
-      if (aggregate[i] == unassigned && first_pass[j] >= 0) aggregate[i] = first_pass[j];
-    });
-  }
-  for (int i = 0; i < nodes; ++i) {
-    if (aggregate[i] != unassigned) continue;
-    aggregate[i] = count;
-    for_each_neighbour(matrix, i, [&](int j) {
-      if (aggregate[j] == unassigned) aggregate[j] = count;
-    });
-    ++count;
-  }
-  return count;
+  return greedy_aggregation(
+      matrix.node_count(), [&](int node, auto visit) { for_each_neighbour(matrix, node, visit); },
+      aggregate);
 }
 
 // The pattern of B, the sums B(r, c) of A's blocks (i, j) with r = row_map[i] and c =

@@ -142,7 +142,8 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
       {"simulation.integrator=newton",
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
            "preconditioner": "pd_matrix"})",
-       R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3})",
+       R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
+           "initial_hessian": "pd_multigrid"})",
        "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
@@ -161,6 +162,12 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   EXPECT_DOUBLE_EQ(s.solver.quasi_newton.tolerance, 0.02);
   EXPECT_EQ(s.solver.quasi_newton.max_iterations, 9);
   EXPECT_EQ(s.solver.quasi_newton.history, 3);
+  EXPECT_EQ(s.solver.quasi_newton.initial_hessian, QuasiNewtonInitialHessian::pd_multigrid);
+  EXPECT_EQ(
+      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.initial_hessian,
+      QuasiNewtonInitialHessian::pd_matrix);
+  EXPECT_THAT(with("simulation.quasi_newton.initial_hessian", R"("multigrid")"),
+              HasSubstr("simulation.quasi_newton.initial_hessian: expected one of"));
   EXPECT_DOUBLE_EQ(s.solver.pd.max_estimated_error, 0.0);
   EXPECT_EQ(with("simulation.newton.tolerance", "0"),
             "dir/s.json: simulation.newton.tolerance: expected a number in (0, 1], got 0");
@@ -354,6 +361,17 @@ TEST(Scenario, NotesImplicitEulerKeysThatTheDefaultIntegratorIgnores) {
     EXPECT_TRUE(named.notes.empty()) << integrator;
   }
   EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json").notes.empty());
+}
+
+TEST(Scenario, NotesAMultigridInitialHessianAtALooseTolerance) {
+  const std::string multigrid = R"(simulation.quasi_newton.initial_hessian="pd_multigrid")";
+  const Scenario loose = parse_scenario(test::minimal_scenario, "dir/s.json", {multigrid});
+  ASSERT_EQ(loose.notes.size(), 1u);
+  EXPECT_THAT(loose.notes[0], HasSubstr("dir/s.json: simulation.quasi_newton.initial_hessian: "
+                                        "\"pd_multigrid\" stops steps early"));
+  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json",
+                             {multigrid, "simulation.quasi_newton.tolerance=1e-3"})
+                  .notes.empty());
 }
 
 TEST(Scenario, ReadsTheStrainLimit) {

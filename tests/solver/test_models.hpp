@@ -173,6 +173,27 @@ inline SpringModel grid_model(int nx, int ny, double spacing, double particle_ma
   return model;
 }
 
+/// The stiff hanging sheet of docs/benchmarks.md on n x n particles: 1 m, 1 kg, 3000 N/m springs,
+/// two corners of one edge pinned; at rest in `state`.
+inline SpringModel stiff_sheet(int n, State& state) {
+  SpringModel model = grid_model(n, n, 1.0 / (n - 1), 1.0 / (n * n), 3000.0, 0.0, state);
+  model.pinned[n * (n - 1)] = 1;
+  model.pinned[n * n - 1] = 1;
+  finalize_model(model);
+  return model;
+}
+
+/// A vector of 3#P standard normal entries, zero on the pinned particles.
+inline Eigen::VectorXd random_free_vector(const SpringModel& model, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd v(3 * model.particle_count());
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    v[i] = model.inverse_mass[i / 3] == 0.0 ? 0.0 : normal(random);
+  }
+  return v;
+}
+
 /// Couples every two structural or shear springs that are edges of one of the model's triangles,
 /// with random stiffnesses of either sign (N/m).
 inline void couple_triangle_edges(SpringModel& model, unsigned seed) {

@@ -16,11 +16,23 @@
 namespace tissu {
 namespace {
 
-const Integrator minimisers[] = {Integrator::newton, Integrator::quasi_newton};
+// the integrators that minimise the step's potential, and quasi-Newton's two initial Hessians
+struct Minimiser {
+  Integrator integrator;
+  QuasiNewtonInitialHessian initial_hessian;
+  const char* name;
+};
+const Minimiser minimisers[] = {
+    {Integrator::newton, QuasiNewtonInitialHessian::pd_matrix, "newton"},
+    {Integrator::quasi_newton, QuasiNewtonInitialHessian::pd_matrix, "quasi_newton"},
+    {Integrator::quasi_newton, QuasiNewtonInitialHessian::pd_multigrid,
+     "quasi_newton/pd_multigrid"},
+};
 
-SolverParams minimiser(Integrator integrator, double h, double tolerance) {
+SolverParams minimiser(const Minimiser& method, double h, double tolerance) {
   SolverParams params;
-  params.integrator = integrator;
+  params.integrator = method.integrator;
+  params.quasi_newton.initial_hessian = method.initial_hessian;
   params.time_step = h;
   params.environment.wind.air_density = 0.0;
   params.newton.tolerance = params.quasi_newton.tolerance = tolerance;
@@ -28,32 +40,21 @@ SolverParams minimiser(Integrator integrator, double h, double tolerance) {
   return params;
 }
 
-// the stiff hanging sheet of docs/benchmarks.md on n x n particles: 1 m, 1 kg, 3000 N/m springs,
-// two corners of one edge pinned
-SpringModel stiff_sheet(int n, State& state) {
-  SpringModel model = test::grid_model(n, n, 1.0 / (n - 1), 1.0 / (n * n), 3000.0, 0.0, state);
-  model.pinned[n * (n - 1)] = 1;
-  model.pinned[n * n - 1] = 1;
-  finalize_model(model);
-  return model;
-}
-
 TEST(BackwardEulerMinimisers, ReachTheExactBackwardEulerStep) {
   // without damping the minimiser of the incremental potential is the backward-Euler step, which
   // a dense Newton solve of M (x1 - x0 - h v0) / h^2 = f(x1) + M g gives to round-off
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     for (const double h : {1e-3, 1.0 / 60.0}) {
       State state;
       const SpringModel model = test::perturbed_sheet(state, 0.0, 7);
-      const SolverParams params = minimiser(integrator, h, 1e-12);
+      const SolverParams params = minimiser(method, h, 1e-12);
       const Eigen::VectorXd reference =
           test::backward_euler_positions(model, state, h, params.environment.gravity);
       const double displacement = (reference - state.x).lpNorm<Eigen::Infinity>();
       State stepped = state;
-      ASSERT_EQ(step(model, params, stepped), StepStatus::ok)
-          << to_string(integrator) << " h " << h;
+      ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << method.name << " h " << h;
       EXPECT_LT((stepped.x - reference).lpNorm<Eigen::Infinity>(), 1e-9 * displacement)
-          << to_string(integrator) << " h " << h;
+          << method.name << " h " << h;
       EXPECT_LT((stepped.v - (reference - state.x) / h).lpNorm<Eigen::Infinity>(),
                 1e-9 * displacement / h);
     }
@@ -65,15 +66,15 @@ TEST(BackwardEulerMinimisers, SolveTheDampedBackwardEulerEquation) {
   //   m (v1 - v0) / h = m g + f_springs(x1) - c m v1 - sum nu ((v1_i - v1_j) . u0) u0,
   // u0 the spring's direction at the start of the step; checked here term by term, independently
   // of the potential's code, to 1e-8 of the weight
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State state;
     const SpringModel model = test::perturbed_sheet(state, 0.3, 5);
-    SolverParams params = minimiser(integrator, 1.0 / 30.0, 1e-12);
+    SolverParams params = minimiser(method, 1.0 / 30.0, 1e-12);
     params.environment.air_damping = 0.4;
     const double c = params.environment.air_damping;
     const double h = params.time_step;
     State stepped = state;
-    ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << to_string(integrator);
+    ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << method.name;
     Eigen::VectorXd imbalance = Eigen::VectorXd::Zero(state.x.size());
     for (int p = 0; p < model.particle_count(); ++p) {
       imbalance.segment<3>(3 * p) =
@@ -99,7 +100,7 @@ TEST(BackwardEulerMinimisers, SolveTheDampedBackwardEulerEquation) {
         weight_n = std::max(weight_n, model.mass[p] * params.environment.gravity.norm());
       }
     }
-    EXPECT_LT(imbalance.lpNorm<Eigen::Infinity>(), 1e-8 * weight_n) << to_string(integrator);
+    EXPECT_LT(imbalance.lpNorm<Eigen::Infinity>(), 1e-8 * weight_n) << method.name;
   }
 }
 
@@ -107,16 +108,16 @@ TEST(BackwardEulerMinimisers, SolveTheBackwardEulerEquationWithCouplings) {
   // Delingette's couplings (spring_coupling.hpp), which Projective Dynamics cannot take: the
   // converged step satisfies m (v1 - v0) / h = f(x1) + m g with f the springs' and couplings'
   // forces of accumulate_forces(), to 1e-8 of the weight
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State state;
     SpringModel model = test::perturbed_sheet(state, 0.0, 11);
     test::couple_triangle_edges(model, 4);
     model.coupling_stiffness *= 0.2;  // within +-60 N/m of the springs' 100: a convex energy
     finalize_model(model);
-    const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-12);
+    const SolverParams params = minimiser(method, 1.0 / 60.0, 1e-12);
     const double h = params.time_step;
     State stepped = state;
-    ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << to_string(integrator);
+    ASSERT_EQ(step(model, params, stepped), StepStatus::ok) << method.name;
     ForceWorkspace forces;
     Eigen::VectorXd force;
     accumulate_forces(model, params.environment, 0.0, stepped.x,
@@ -128,63 +129,62 @@ TEST(BackwardEulerMinimisers, SolveTheBackwardEulerEquationWithCouplings) {
           model.mass[p] * (stepped.v - state.v).segment<3>(3 * p) / h - force.segment<3>(3 * p);
       largest_n = std::max(largest_n, imbalance.norm());
     }
-    EXPECT_LT(largest_n, 1e-8 * model.mass[6] * params.environment.gravity.norm())
-        << to_string(integrator);
+    EXPECT_LT(largest_n, 1e-8 * model.mass[6] * params.environment.gravity.norm()) << method.name;
   }
 }
 
 TEST(BackwardEulerMinimisers, StopAtTheirToleranceAndSaySoWhenTheyCannot) {
   // the stiff sheet at h = 1/30 s: the default tolerance is met; one iteration is not enough
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State initial;
-    const SpringModel model = stiff_sheet(21, initial);
-    SolverParams params = minimiser(integrator, 1.0 / 30.0, 1e-2);
+    const SpringModel model = test::stiff_sheet(21, initial);
+    SolverParams params = minimiser(method, 1.0 / 30.0, 1e-2);
     params.newton.max_iterations = params.quasi_newton.max_iterations = 200;
     State state = initial;
     StepWorkspace workspace;
     for (int frame = 0; frame < 10; ++frame) {
       ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok)
-          << to_string(integrator) << " frame " << frame;
+          << method.name << " frame " << frame;
     }
-    const double ratio = integrator == Integrator::newton ? workspace.newton.correction_ratio
-                                                          : workspace.quasi_newton.correction_ratio;
+    const double ratio = method.integrator == Integrator::newton
+                             ? workspace.newton.correction_ratio
+                             : workspace.quasi_newton.correction_ratio;
     EXPECT_LE(ratio, 1e-2);
     params.newton.max_iterations = params.quasi_newton.max_iterations = 1;
     params.newton.tolerance = params.quasi_newton.tolerance = 1e-9;
-    EXPECT_EQ(step(model, params, state, workspace), StepStatus::not_converged)
-        << to_string(integrator);
+    EXPECT_EQ(step(model, params, state, workspace), StepStatus::not_converged) << method.name;
     EXPECT_TRUE(state.x.allFinite());
   }
 }
 
 TEST(BackwardEulerMinimisers, PinnedParticlesFollowTheirVelocityAndTheSheetFalls) {
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State state;
     SpringModel model = test::perturbed_sheet(state, 0.1, 3);
     const State initial = state;
     state.v.segment<3>(0) = Eigen::Vector3d(0.0, 0.0, 0.5);  // a pinned corner moving up
-    const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-3);
+    const SolverParams params = minimiser(method, 1.0 / 60.0, 1e-3);
     StepWorkspace workspace;
     for (int n = 0; n < 60; ++n) ASSERT_EQ(step(model, params, state, workspace), StepStatus::ok);
     EXPECT_NEAR(state.x[2], initial.x[2] + 0.5 * 60 / 60.0, 1e-12);
     EXPECT_EQ(Eigen::Vector3d(state.x.segment<3>(15)), Eigen::Vector3d(initial.x.segment<3>(15)));
-    EXPECT_LT(state.x[3 * 33 + 2], initial.x[3 * 33 + 2] - 0.05) << to_string(integrator);
+    EXPECT_LT(state.x[3 * 33 + 2], initial.x[3 * 33 + 2] - 0.05) << method.name;
   }
 }
 
 TEST(BackwardEulerMinimisers, IdenticalForOneAndTwoThreads) {
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State initial;
     SpringModel model = test::grid_model(20, 20, 0.025, 0.001, 300.0, 0.05, initial);
     model.pinned[0] = 1;
     model.pinned[19] = 1;
     finalize_model(model);
-    SolverParams params = minimiser(integrator, 1.0 / 30.0, 1e-3);
+    SolverParams params = minimiser(method, 1.0 / 30.0, 1e-3);
     params.environment.wind.air_density = 1.2;
     params.environment.wind.velocity = Eigen::Vector3d(0.0, 0.0, 3.0);
     const auto results = test::step_with_one_and_two_threads(model, params, initial, 10);
-    EXPECT_TRUE((results[0].x.array() == results[1].x.array()).all()) << to_string(integrator);
-    EXPECT_TRUE((results[0].v.array() == results[1].v.array()).all()) << to_string(integrator);
+    EXPECT_TRUE((results[0].x.array() == results[1].x.array()).all()) << method.name;
+    EXPECT_TRUE((results[0].v.array() == results[1].v.array()).all()) << method.name;
     EXPECT_NE(results[0].x, initial.x);
   }
 }
@@ -193,10 +193,10 @@ TEST(BackwardEulerMinimisers, AReusedWorkspaceFollowsARecompiledModel) {
   // the preconditioner, its factorisation and the Hessian's pattern are keyed on the model's
   // identity: stepping another model (here: one more pin, other stiffnesses) with the same
   // workspace gives the fresh workspace's bits
-  for (const Integrator integrator : minimisers) {
+  for (const Minimiser& method : minimisers) {
     State state;
     SpringModel model = test::perturbed_sheet(state, 0.1, 9);
-    const SolverParams params = minimiser(integrator, 1.0 / 60.0, 1e-4);
+    const SolverParams params = minimiser(method, 1.0 / 60.0, 1e-4);
     StepWorkspace reused;
     State first = state;
     ASSERT_EQ(step(model, params, first, reused), StepStatus::ok);
@@ -207,8 +207,8 @@ TEST(BackwardEulerMinimisers, AReusedWorkspaceFollowsARecompiledModel) {
     StepWorkspace new_workspace;
     ASSERT_EQ(step(model, params, again, reused), StepStatus::ok);
     ASSERT_EQ(step(model, params, fresh, new_workspace), StepStatus::ok);
-    EXPECT_TRUE((again.x.array() == fresh.x.array()).all()) << to_string(integrator);
-    EXPECT_TRUE((again.v.array() == fresh.v.array()).all()) << to_string(integrator);
+    EXPECT_TRUE((again.x.array() == fresh.x.array()).all()) << method.name;
+    EXPECT_TRUE((again.v.array() == fresh.v.array()).all()) << method.name;
   }
 }
 
@@ -217,7 +217,7 @@ TEST(ProjectiveDynamicsCheck, AWeakGlobalSolverOnStiffClothIsReportedNotConverge
   // h = 1/30 s barely moves it (docs/benchmarks.md): its steps must say so; the direct solver's
   // steps, with the same 10 iterations, pass the same check
   State initial;
-  const SpringModel model = stiff_sheet(31, initial);
+  const SpringModel model = test::stiff_sheet(31, initial);
   for (const PdGlobalSolver solver :
        {PdGlobalSolver::colored_gauss_seidel, PdGlobalSolver::direct}) {
     SolverParams params;

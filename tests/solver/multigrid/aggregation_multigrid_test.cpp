@@ -50,16 +50,6 @@ SymmetricBlockMatrix sheet_hessian(int n, unsigned seed, SpringModel& model) {
   return hessian;
 }
 
-Eigen::VectorXd random_free_vector(const SpringModel& model, unsigned seed) {
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd v(3 * model.particle_count());
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    v[i] = model.inverse_mass[i / 3] == 0.0 ? 0.0 : normal(random);
-  }
-  return v;
-}
-
 // Conjugate gradient on A x = b from 0, preconditioned by one V-cycle, to |r| <= tolerance |b|;
 // returns the iterations.
 int preconditioned_cg(const SymmetricBlockMatrix& a, AggregationMultigrid& multigrid,
@@ -92,8 +82,8 @@ TEST(AggregationMultigrid, TheVCycleIsSymmetricAndPositiveDefinite) {
   EXPECT_GE(multigrid.level_count(), 3);
   EXPECT_LE(multigrid.node_count(multigrid.level_count() - 1), 64);
   for (unsigned seed = 0; seed < 5; ++seed) {
-    const Eigen::VectorXd r1 = random_free_vector(model, 2 * seed);
-    const Eigen::VectorXd r2 = random_free_vector(model, 2 * seed + 1);
+    const Eigen::VectorXd r1 = test::random_free_vector(model, 2 * seed);
+    const Eigen::VectorXd r2 = test::random_free_vector(model, 2 * seed + 1);
     Eigen::VectorXd z1, z2;
     multigrid.apply(r1, z1);
     multigrid.apply(r2, z2);
@@ -118,7 +108,7 @@ TEST(AggregationMultigrid, ConjugateGradientIterationsDoNotGrowWithTheSheet) {
     const SymmetricBlockMatrix hessian = sheet_hessian(n, 3, model);
     AggregationMultigrid multigrid;
     multigrid.set_operator(hessian, model.identity);
-    const Eigen::VectorXd b = random_free_vector(model, 4);
+    const Eigen::VectorXd b = test::random_free_vector(model, 4);
     Eigen::VectorXd x;
     iterations.push_back(preconditioned_cg(hessian, multigrid, b, 1e-8, x));
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct{to_sparse(hessian)};
@@ -137,7 +127,7 @@ TEST(AggregationMultigrid, ANewPatternKeyRebuildsTheHierarchy) {
   reused.set_operator(first, small.identity);
   reused.set_operator(second, large.identity);
   fresh.set_operator(second, large.identity);
-  const Eigen::VectorXd r = random_free_vector(large, 7);
+  const Eigen::VectorXd r = test::random_free_vector(large, 7);
   Eigen::VectorXd from_reused, from_fresh;
   reused.apply(r, from_reused);
   fresh.apply(r, from_fresh);

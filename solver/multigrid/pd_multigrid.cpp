@@ -1,0 +1,222 @@
+#include "solver/multigrid/pd_multigrid.hpp"
+
+#include <algorithm>
+
+#include "solver/multigrid/greedy_aggregation.hpp"
+#include "solver/parallel.hpp"
+#include "solver/pd/pd_direct_solver.hpp"
+
+namespace tissu {
+namespace {
+
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Chosen on the stiff hanging sheet (docs/benchmarks.md, "quasi-Newton's initial Hessian by
+// multigrid"): one cycle's error factor in the energy norm at 81 x 81 particles was 0.46 with one
+// sweep of omega 0.9, 0.32 with two; with two, omega 0.6 and 0.8 gave 0.42 and 0.35.
+constexpr int coarsest_nodes = 100;       // a level this small is solved exactly
+constexpr int sweeps = 2;                 // damped Jacobi sweeps before and after the coarse level
+constexpr double smoother_damping = 0.9;  // omega of the sweeps, where rho(D^-1 A) <= 2
+constexpr double prolongator_damping = 4.0 / 3.0;  // omega rho(D^-1 A) of the smoothed prolongator
+
+// Y = M X, column by column of the 3 x n blocks: Y.col(i) = sum_k M(i, k) X.col(k)
+void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y) {
+  const int rows = static_cast<int>(m.rows());
+  const int* offsets = m.outerIndexPtr();
+  const int* columns = m.innerIndexPtr();
+  const double* values = m.valuePtr();
+#pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
+  for (int i = 0; i < rows; ++i) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k) sum += values[k] * x.col(columns[k]);
+    y.col(i) = sum;
+  }
+}
+
+// R = B - A X
+void residual(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::Matrix3Xd& x,
+              Eigen::Matrix3Xd& r) {
+  const int rows = static_cast<int>(a.rows());
+  const int* offsets = a.outerIndexPtr();
+  const int* columns = a.innerIndexPtr();
+  const double* values = a.valuePtr();
+#pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
+  for (int i = 0; i < rows; ++i) {
+    Eigen::Vector3d sum = b.col(i);
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k) sum -= values[k] * x.col(columns[k]);
+    r.col(i) = sum;
+  }
+}
+
+// the tentative prolongator: T(i, a) = 1 if node i is in aggregate a
+RowMatrix tentative_prolongator(const std::vector<int>& aggregate, int aggregates) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(aggregate.size());
+  for (int i = 0; i < static_cast<int>(aggregate.size()); ++i) {
+    if (aggregate[i] >= 0) entries.emplace_back(i, aggregate[i], 1.0);
+  }
+  RowMatrix t(static_cast<Eigen::Index>(aggregate.size()), aggregates);
+  t.setFromTriplets(entries.begin(), entries.end());
+  return t;
+}
+
+// Gershgorin bound on the spectral radius of D^-1 A
+double jacobi_radius_bound(const RowMatrix& a, const Eigen::VectorXd& diagonal) {
+  double bound = 0.0;
+  for (int i = 0; i < a.rows(); ++i) {
+    double row_sum = 0.0;
+    for (RowMatrix::InnerIterator entry(a, i); entry; ++entry) row_sum += std::abs(entry.value());
+    bound = std::max(bound, row_sum / diagonal[i]);
+  }
+  return bound;
+}
+
+// The graph the aggregates are grown on, in compressed rows.
+struct AggregationGraph {
+  std::vector<int> offsets{0};  // #nodes+1
+  std::vector<int> nodes;       // neighbours of each node, sorted, without the node itself
+};
+
+void append_row(std::vector<int>& row, AggregationGraph& graph) {
+  std::sort(row.begin(), row.end());
+  row.erase(std::unique(row.begin(), row.end()), row.end());
+  graph.nodes.insert(graph.nodes.end(), row.begin(), row.end());
+  graph.offsets.push_back(static_cast<int>(graph.nodes.size()));
+}
+
+// The free particles joined by structural or shear springs (the mesh's edges and quad diagonals):
+// aggregates grown on it span one ring, about 3 x 3 particles on a grid. Grown on the PD matrix's
+// graph, which the bending springs widen to two rings, they span 5 x 5, and a Jacobi sweep cannot
+// smooth what so coarse a level misses (a cycle's error factor 0.73 on the stiff 81 x 81 sheet).
+// A particle with bending springs only keeps them.
+AggregationGraph nearest_neighbour_graph(const SpringModel& model, const PdSystem& system) {
+  AggregationGraph graph;
+  std::vector<int> row, bending_row;
+  for (const int i : system.free_particles) {
+    row.clear();
+    bending_row.clear();
+    for (int e = system.neighbour_offsets[i]; e < system.neighbour_offsets[i + 1]; ++e) {
+      const int j = system.free_index[system.neighbours[e]];
+      if (j < 0 || j == system.free_index[i]) continue;
+      const bool bending = model.kind[model.incidence.springs[e]] == SpringKind::bending;
+      (bending ? bending_row : row).push_back(j);
+    }
+    append_row(row.empty() ? bending_row : row, graph);
+  }
+  return graph;
+}
+
+// Aggregates a and b are neighbours when some of their nodes are.
+AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<int>& aggregate,
+                                int aggregates) {
+  std::vector<std::vector<int>> rows(aggregates);
+  for (int i = 0; i + 1 < static_cast<int>(fine.offsets.size()); ++i) {
+    const int a = aggregate[i];
+    if (a < 0) continue;
+    for (int k = fine.offsets[i]; k < fine.offsets[i + 1]; ++k) {
+      const int b = aggregate[fine.nodes[k]];
+      if (b >= 0 && b != a) rows[a].push_back(b);
+    }
+  }
+  AggregationGraph coarse;
+  for (std::vector<int>& row : rows) append_row(row, coarse);
+  return coarse;
+}
+
+}  // namespace
+
+bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
+  if (m_generation == system.generation && !m_levels.empty()) return true;
+  m_generation = 0;
+  m_levels.clear();
+  m_levels.emplace_back();
+  m_levels[0].matrix = pd_free_particle_matrix(system);
+  if (!(m_levels[0].matrix.diagonal().array() > 0.0).all()) return false;
+  AggregationGraph graph = nearest_neighbour_graph(model, system);
+  for (int index = 0;; ++index) {
+    PdMultigridLevel& fine = m_levels[index];
+    const RowMatrix& a = fine.matrix;
+    const int nodes = static_cast<int>(a.rows());
+    const Eigen::VectorXd diagonal = a.diagonal();
+    const double radius_bound = jacobi_radius_bound(a, diagonal);
+    // omega rho(D^-1 A) <= 2 smoother_damping < 2: the sweep converges, the cycle is definite
+    fine.jacobi_scale =
+        (smoother_damping * 2.0 / std::max(radius_bound, 2.0)) * diagonal.cwiseInverse();
+    fine.solution.setZero(3, nodes);
+    fine.residual.setZero(3, nodes);
+    fine.right_side.setZero(3, nodes);
+    if (nodes <= coarsest_nodes) break;
+    std::vector<int> aggregate;
+    const int aggregates = greedy_aggregation(
+        nodes,
+        [&](int i, auto visit) {
+          for (int k = graph.offsets[i]; k < graph.offsets[i + 1]; ++k) visit(graph.nodes[k]);
+        },
+        aggregate);
+    if (aggregates == 0 || aggregates * 5 > nodes * 4) break;  // no longer coarsening
+    graph = quotient_graph(graph, aggregate, aggregates);
+    // P = (I - omega D^-1 A) T with omega = 4 / (3 rho(D^-1 A)) (Vanek et al. 1996, eq. 4.3)
+    const double omega = prolongator_damping / radius_bound;
+    const RowMatrix t = tentative_prolongator(aggregate, aggregates);
+    const RowMatrix scaled_a = (omega * diagonal.cwiseInverse()).asDiagonal() * a;
+    const RowMatrix smoothing = scaled_a * t;
+    fine.prolongator = t - smoothing;
+    fine.prolongator.prune(0.0);
+    fine.restrictor = fine.prolongator.transpose();
+    const RowMatrix a_p = a * fine.prolongator;
+    RowMatrix coarse = fine.restrictor * a_p;
+    coarse.prune(0.0);
+    PdMultigridLevel next;
+    next.matrix = std::move(coarse);
+    m_levels.push_back(std::move(next));
+  }
+  m_coarsest = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
+  m_coarsest->compute(Eigen::SparseMatrix<double>(m_levels.back().matrix));
+  if (m_coarsest->info() != Eigen::Success) return false;
+  m_generation = system.generation;
+  return true;
+}
+
+void PdMultigrid::cycle(int index) {
+  PdMultigridLevel& level = m_levels[index];
+  if (index + 1 == static_cast<int>(m_levels.size())) {
+    level.solution = m_coarsest->solve(level.right_side.transpose()).transpose();
+    return;
+  }
+  const auto jacobi_correction = [&](const Eigen::Matrix3Xd& r) {
+    level.solution += r * level.jacobi_scale.asDiagonal();
+  };
+  level.solution = level.right_side * level.jacobi_scale.asDiagonal();  // the first sweep from 0
+  for (int sweep = 1; sweep < sweeps; ++sweep) {
+    residual(level.matrix, level.right_side, level.solution, level.residual);
+    jacobi_correction(level.residual);
+  }
+  residual(level.matrix, level.right_side, level.solution, level.residual);
+  PdMultigridLevel& coarse = m_levels[index + 1];
+  multiply(level.restrictor, level.residual, coarse.right_side);
+  cycle(index + 1);
+  multiply(level.prolongator, coarse.solution, level.residual);
+  level.solution += level.residual;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    residual(level.matrix, level.right_side, level.solution, level.residual);
+    jacobi_correction(level.residual);
+  }
+}
+
+bool PdMultigrid::apply(const SpringModel& model, const PdSystem& system, const Eigen::VectorXd& r,
+                        Eigen::VectorXd& z) {
+  if (!prepare(model, system)) return false;
+  PdMultigridLevel& finest = m_levels[0];
+  const int free_count = static_cast<int>(system.free_particles.size());
+  for (int f = 0; f < free_count; ++f) {
+    finest.right_side.col(f) = r.segment<3>(3 * system.free_particles[f]);
+  }
+  cycle(0);
+  z.setZero(r.size());
+  for (int f = 0; f < free_count; ++f) {
+    z.segment<3>(3 * system.free_particles[f]) = finest.solution.col(f);
+  }
+  return true;
+}
+
+}  // namespace tissu
