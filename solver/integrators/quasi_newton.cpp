@@ -11,10 +11,11 @@ namespace tissu {
 namespace {
 
 void check_options(const QuasiNewtonOptions& options) {
-  if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.history < 0) {
+  if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.history < 0 ||
+      !(options.gradient_reduction >= 0.0 && options.gradient_reduction <= 1.0)) {
     throw std::invalid_argument(
-        "quasi_newton_step: expected quasi_newton.tolerance > 0, quasi_newton.max_iterations >= 1 "
-        "and quasi_newton.history >= 0");
+        "quasi_newton_step: expected quasi_newton.tolerance > 0, quasi_newton.max_iterations >= 1, "
+        "quasi_newton.history >= 0 and quasi_newton.gradient_reduction in [0, 1]");
   }
 }
 
@@ -104,6 +105,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
 
   qn.iterations = 0;
   qn.correction_ratio = 0.0;
+  qn.gradient_ratio = 0.0;
   bool converged = first_gradient_n == 0.0;
   while (!converged && qn.iterations < options.max_iterations) {
     lbfgs_direction(model, options.initial_hessian, qn);
@@ -123,7 +125,10 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     ++qn.iterations;
     qn.correction_ratio = relative_correction(model, h, qn.direction, qn.common.trial_x, state.x,
                                               qn.common.external_force, 1.0);
-    converged = qn.correction_ratio <= options.tolerance;
+    qn.gradient_ratio = qn.common.trial_gradient.norm() / first_gradient_n;
+    converged =
+        qn.correction_ratio <= options.tolerance &&
+        (options.gradient_reduction == 0.0 || qn.gradient_ratio <= options.gradient_reduction);
     remember_pair(qn);
     qn.common.x.swap(qn.common.trial_x);
     qn.common.gradient.swap(qn.common.trial_gradient);

@@ -24,6 +24,7 @@ struct QuasiNewtonWorkspace {
   int newest_pair = -1;
   int iterations = 0;             ///< iterations of the last step
   double correction_ratio = 0.0;  ///< the last relative_correction() (dimensionless)
+  double gradient_ratio = 0.0;    ///< |g| at the end of the last step / at its start
 };
 
 }  // namespace tissu

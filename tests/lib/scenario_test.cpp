@@ -143,7 +143,7 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
            "preconditioner": "pd_matrix"})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
-           "initial_hessian": "pd_multigrid"})",
+           "initial_hessian": "pd_multigrid", "gradient_reduction": 0.1})",
        "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
@@ -163,6 +163,12 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   EXPECT_EQ(s.solver.quasi_newton.max_iterations, 9);
   EXPECT_EQ(s.solver.quasi_newton.history, 3);
   EXPECT_EQ(s.solver.quasi_newton.initial_hessian, QuasiNewtonInitialHessian::pd_multigrid);
+  EXPECT_DOUBLE_EQ(s.solver.quasi_newton.gradient_reduction, 0.1);
+  EXPECT_DOUBLE_EQ(
+      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.gradient_reduction,
+      0.0);
+  EXPECT_THAT(with("simulation.quasi_newton.gradient_reduction", "1.5"),
+              HasSubstr("simulation.quasi_newton.gradient_reduction: expected"));
   EXPECT_EQ(
       parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.initial_hessian,
       QuasiNewtonInitialHessian::pd_matrix);
@@ -371,6 +377,9 @@ TEST(Scenario, NotesAMultigridInitialHessianAtALooseTolerance) {
                                         "\"pd_multigrid\" stops steps early"));
   EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json",
                              {multigrid, "simulation.quasi_newton.tolerance=1e-3"})
+                  .notes.empty());
+  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json",
+                             {multigrid, "simulation.quasi_newton.gradient_reduction=0.1"})
                   .notes.empty());
 }
 
