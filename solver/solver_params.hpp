@@ -123,10 +123,12 @@ struct QuasiNewtonOptions {
   int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
   QuasiNewtonInitialHessian initial_hessian = QuasiNewtonInitialHessian::pd_matrix;
   /// in [0, 1]: when > 0, a step also stops only once its gradient's norm is at most this
-  /// fraction of the step's first; 0: the correction test alone. The correction test alone stops
-  /// L-BFGS early on the soft modes, the more so with the V-cycle: at 0.1 the stiff sheet's motion
-  /// is 5 to 6 % from the converged one with either initial Hessian (11.6 % and 51 % without), and
-  /// the iterations per step no longer grow with the sheet (docs/benchmarks.md)
+  /// fraction of the step's first, or of the tolerance's share of the forces the step balances
+  /// (tolerance F, F = step_force_scale()) when that is larger, so that a cloth starting the step
+  /// in balance is not held to reduce round-off; 0: the correction test alone. The correction test
+  /// alone stops L-BFGS early on the soft modes, the more so with the V-cycle: at 0.1 the stiff
+  /// sheet's motion is 5 to 6 % from the converged one with either initial Hessian (11.6 % and 51 %
+  /// without), and the iterations per step no longer grow with the sheet (docs/benchmarks.md)
   double gradient_reduction = 0.0;
 };
 

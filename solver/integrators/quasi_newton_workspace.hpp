@@ -24,7 +24,8 @@ struct QuasiNewtonWorkspace {
   int newest_pair = -1;
   int iterations = 0;             ///< iterations of the last step
   double correction_ratio = 0.0;  ///< the last relative_correction() (dimensionless)
-  double gradient_ratio = 0.0;    ///< |g| at the end of the last step / at its start
+  /// |g| at the end of the last step / max(|g| at its start, tolerance F), F = step_force_scale()
+  double gradient_ratio = 0.0;
 };
 
 }  // namespace tissu
