@@ -7,9 +7,11 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
+#include "solver/integrators/incremental_potential.hpp"
 #include "solver/integrators/projective_dynamics.hpp"
 #include "solver/multigrid/pd_multigrid.hpp"
 #include "solver/pd/pd_direct_solver.hpp"
@@ -252,6 +254,35 @@ void BM_MultigridCycle(benchmark::State& bench) {
   bench.counters["levels"] = multigrid.level_count();
 }
 
+// One evaluation of backward Euler's incremental potential and its gradient at a perturbed
+// iterate, what every quasi-Newton and Newton iteration (and line search trial) pays
+void BM_StepPotentialGradient(benchmark::State& bench) {
+  GridSystem grid_system(static_cast<int>(bench.range(0)));
+  auto& [state, model, system] = grid_system;
+  omp_set_num_threads(1);
+  model.damping.setConstant(model.spring_count(), 0.01);  // (N s/m) the viscous terms too
+  Eigen::VectorXd inertial = state.x, x = state.x;
+  for (int p = 0; p < model.particle_count(); ++p) {
+    inertial[3 * p + 2] -= 9.81 * time_step_s * time_step_s;
+    x[3 * p + 2] -= 0.01 * std::sin(7.0 * state.x[3 * p]) * std::cos(5.0 * state.x[3 * p + 1]);
+  }
+  StepPotential potential;
+  potential.time_step_s = time_step_s;
+  potential.start_x = &state.x;
+  potential.inertial = &inertial;
+  potential.air_damping = 0.1;
+  StepPotentialWorkspace workspace;
+  prepare_step_potential(model, potential, workspace);
+  Eigen::VectorXd gradient;
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(evaluate_step_potential(model, potential, x, workspace, &gradient));
+  }
+  bench.counters["springs"] = model.spring_count();
+  bench.counters["s_per_spring"] =
+      benchmark::Counter(model.spring_count(), benchmark::Counter::kIsIterationInvariantRate |
+                                                   benchmark::Counter::kInvert);
+}
+
 void side_arguments(benchmark::internal::Benchmark* b) {
   b->ArgName("side");
   for (int side : {128, 256, 512, 1024}) b->Arg(side);
@@ -288,6 +319,12 @@ BENCHMARK(BM_DirectSolve<SolvePrecision::single>)
     ->Arg(256)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MultigridCycle)
+    ->ArgName("side")
+    ->Arg(81)
+    ->Arg(128)
+    ->Arg(256)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepPotentialGradient)
     ->ArgName("side")
     ->Arg(81)
     ->Arg(128)

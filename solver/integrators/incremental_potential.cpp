@@ -56,13 +56,16 @@ void prepare_step_potential(const SpringModel& model, const StepPotential& poten
   const int springs = model.spring_count();
   const Eigen::VectorXd& x_n = *potential.start_x;
   workspace.start_directions.resize(3, springs);
+  workspace.start_projections_m.resize(springs);
 #pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
   for (int s = 0; s < springs; ++s) {
     const Eigen::Vector3d d =
         x_n.segment<3>(3 * model.springs(s, 0)) - x_n.segment<3>(3 * model.springs(s, 1));
     const double length_m = d.norm();
-    workspace.start_directions.col(s) =
+    const Eigen::Vector3d u_n =
         length_m < spring_length_epsilon ? Eigen::Vector3d::Zero() : Eigen::Vector3d(d / length_m);
+    workspace.start_directions.col(s) = u_n;
+    workspace.start_projections_m[s] = u_n.dot(d);
   }
 }
 
@@ -100,8 +103,7 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
     }
     // viscous along the start direction: -nu/h ((d - d_n) . u_n) u_n
     const auto u_n = workspace.start_directions.col(s);
-    const Eigen::Vector3d d_n = x_n.segment<3>(3 * i) - x_n.segment<3>(3 * j);
-    const double rate = u_n.dot(d - d_n);  // (m)
+    const double rate = u_n.dot(d) - workspace.start_projections_m[s];  // (d - d_n) . u_n (m)
     const double viscous = viscous_scale * model.damping[s];
     energy_j += 0.5 * viscous * rate * rate;
     force -= (viscous * rate) * u_n;

@@ -34,11 +34,12 @@ struct StepPotential {
 
 /// Per-spring scratch of evaluate_step_potential(); meaningless between calls.
 struct StepPotentialWorkspace {
-  Eigen::VectorXd spring_energy_j;    ///< #S elastic + viscous energy of each spring (J)
-  Eigen::Matrix3Xd spring_forces;     ///< 3 x #S force of each spring on its first end (N)
-  Eigen::Matrix3Xd start_directions;  ///< 3 x #S u_n, filled by prepare_step_potential()
-  Eigen::VectorXd spring_stretch;     ///< #S |d| - l (m), with couplings only
-  Eigen::VectorXd coupling_tension;   ///< #S tension the couplings add (N)
+  Eigen::VectorXd spring_energy_j;      ///< #S elastic + viscous energy of each spring (J)
+  Eigen::Matrix3Xd spring_forces;       ///< 3 x #S force of each spring on its first end (N)
+  Eigen::Matrix3Xd start_directions;    ///< 3 x #S u_n, filled by prepare_step_potential()
+  Eigen::VectorXd start_projections_m;  ///< #S d_n . u_n (m), filled by prepare_step_potential()
+  Eigen::VectorXd spring_stretch;       ///< #S |d| - l (m), with couplings only
+  Eigen::VectorXd coupling_tension;     ///< #S tension the couplings add (N)
 };
 
 /// Fills what the potential keeps for the whole step (the start directions u_n).
