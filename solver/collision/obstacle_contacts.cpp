@@ -9,11 +9,32 @@
 namespace tissu {
 namespace {
 
+/// Where the segment from `from` to `to` (not of zero length) first comes within `offset_m` of the
+/// surface of `obstacle` (a signed distance <= offset), if it does: sphere tracing (Hart 1996)
+/// along it, each advance by the distance to the offset surface, which cannot overshoot it. The
+/// obstacle is taken where `placement` puts it, at the end of the step; `from_distance_m` is the
+/// signed distance from `from` there. A path still creeping along the surface after 64 advances
+/// counts as reaching it there.
+std::optional<Eigen::Vector3d> trace_to_offset(const Obstacle& obstacle,
+                                               const Eigen::Vector3d& from,
+                                               const Eigen::Vector3d& to,
+                                               const ObstaclePlacement& placement,
+                                               double from_distance_m, double offset_m) {
+  const double length_m = (to - from).norm();
+  double clearance_m = from_distance_m - offset_m;
+  double travelled = 0.0;  // fraction of the path
+  for (int step = 0; step < 64; ++step) {
+    const Eigen::Vector3d here = from + travelled * (to - from);
+    if (step > 0) clearance_m = surface_distance(obstacle, placement, here).distance_m - offset_m;
+    if (clearance_m <= 1e-9 * length_m) return here;
+    travelled += clearance_m / length_m;
+    if (travelled >= 1.0) return std::nullopt;
+  }
+  return from + travelled * (to - from);
+}
+
 /// Where a particle moving from `from` to `to` during the step first comes within the thickness of
-/// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step):
-/// sphere tracing (Hart 1996) along the segment, each advance by the distance to the surface, which
-/// cannot overshoot it. The obstacle is taken where `placement` puts it, at the end of the step;
-/// `from_distance_m` is its signed distance from `from` there.
+/// `obstacle`, if it does, when both ends are clear of it (a thin obstacle crossed in one step).
 std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
                                                      const Eigen::Vector3d& from,
                                                      const Eigen::Vector3d& to,
@@ -22,21 +43,20 @@ std::optional<Eigen::Vector3d> first_contact_on_path(const Obstacle& obstacle,
   const double length_m = (to - from).norm();
   // a particle that starts in contact, at the thickness to round-off (where the last step left
   // it) or closer, and ends clear is leaving: the end-position test handles its contacts
-  double clearance_m = from_distance_m - obstacle.thickness_m;
-  if (!(length_m > 0.0) || clearance_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
+  if (!(length_m > 0.0) ||
+      from_distance_m - obstacle.thickness_m <= 1e-9 * (obstacle.thickness_m + length_m)) {
     return std::nullopt;
   }
-  double travelled = 0.0;  // fraction of the path
-  for (int step = 0; step < 64; ++step) {
-    const Eigen::Vector3d here = from + travelled * (to - from);
-    if (step > 0) {
-      clearance_m = surface_distance(obstacle, placement, here).distance_m - obstacle.thickness_m;
-    }
-    if (clearance_m <= 1e-9 * length_m) return here;
-    travelled += clearance_m / length_m;
-    if (travelled >= 1.0) return std::nullopt;
-  }
-  return from + travelled * (to - from);  // still creeping along the surface: call it a contact
+  return trace_to_offset(obstacle, from, to, placement, from_distance_m, obstacle.thickness_m);
+}
+
+/// Whether a particle moving from `from` to `to` during the step goes into `obstacle` itself (a
+/// signed distance <= 0 on the way). A path that ends clear and only dips into the thickness
+/// layer, as a straight chord past a curved surface does, did not cross anything.
+bool path_enters(const Obstacle& obstacle, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                 const ObstaclePlacement& placement, double from_distance_m) {
+  return (to - from).norm() > 0.0 &&
+         trace_to_offset(obstacle, from, to, placement, from_distance_m, 0.0).has_value();
 }
 
 /// How far carry_with_surface() can move `start` over a step of `h` (m), without its closest-point
@@ -84,7 +104,13 @@ std::optional<Eigen::Vector3d> resolve(const Obstacle& obstacle, const ObstacleP
   const bool crossed =
       ends_near && at_start.distance_m >= 0.0 && surface.normal.dot(at_start.normal) < 0.0;
   if (!ends_near || crossed) {
-    if (const auto contact = first_contact_on_path(obstacle, from, x, after, at_start.distance_m)) {
+    // a path that ends clear met the obstacle only if it went into it (through a thin part): one
+    // that grazed its thickness, as a particle pulled round a moving leg does relative to the leg,
+    // is not held back (it was, and the leg dragged it along: docs/benchmarks.md)
+    const bool went_in = ends_near || path_enters(obstacle, from, x, after, at_start.distance_m);
+    if (const auto contact =
+            went_in ? first_contact_on_path(obstacle, from, x, after, at_start.distance_m)
+                    : std::nullopt) {
       x = *contact;  // where the path first came within the thickness, on its own side
       surface = surface_distance(obstacle, after, x);
     } else if (!ends_near) {

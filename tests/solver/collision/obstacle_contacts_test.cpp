@@ -171,6 +171,43 @@ TEST(ObstacleContacts, AFastClothDoesNotTunnelThroughAThinPlate) {
   }
 }
 
+TEST(ObstacleContacts, APathGrazingACurvedObstacleIsNotHeldBack) {
+  // a leg of 6.5 cm radius; a particle 1 mm clear of its thickness flies along a chord of the
+  // circle it is on, from -20 to +20 degrees: the chord dips into the thickness (to 1.7 mm from
+  // the surface) but not into the leg, and it ends clear, where it is left. Held at its first
+  // touch instead, a particle that a moving leg's surface carries was dragged along by the leg
+  // while its springs stretched 27 times (skirt_walk.json, docs/benchmarks.md)
+  Obstacle leg;
+  leg.shape = ObstacleShape::capsule;
+  leg.position = {0.0, 0.0, -1.0};
+  leg.axis_end = {0.0, 0.0, 1.0};
+  leg.radius_m = 0.065;
+  const double radius_m = leg.radius_m + leg.thickness_m + 0.001;
+  const double angle = 20.0 * M_PI / 180.0;
+  const Eigen::Vector3d start(radius_m * std::cos(angle), -radius_m * std::sin(angle), 0.0);
+  const Eigen::Vector3d end(start.x(), -start.y(), 0.0);
+  SolverParams params = params_with(Integrator::symplectic_euler, leg);
+  params.environment.gravity.setZero();
+  params.time_step = 1.0 / 30.0;
+  State state;
+  const SpringModel model = test::lone_particle(start, (end - start) / params.time_step, state);
+  ASSERT_EQ(step(model, params, state), StepStatus::ok);
+  EXPECT_LT((state.x - end).norm(), 1e-12);
+
+  // a chord from -40 to +40 degrees goes into the leg (to 5.4 cm from its axis): it is stopped
+  // where it first touches the thickness, on its own side
+  const double wide = 40.0 * M_PI / 180.0;
+  const Eigen::Vector3d wide_start(radius_m * std::cos(wide), -radius_m * std::sin(wide), 0.0);
+  const Eigen::Vector3d wide_end(wide_start.x(), -wide_start.y(), 0.0);
+  State across;
+  const SpringModel across_model =
+      test::lone_particle(wide_start, (wide_end - wide_start) / params.time_step, across);
+  ASSERT_EQ(step(across_model, params, across), StepStatus::ok);
+  EXPECT_LT(across.x.y(), 0.0);  // before the chord's middle
+  EXPECT_NEAR(Eigen::Vector2d(across.x.x(), across.x.y()).norm(), leg.radius_m + leg.thickness_m,
+              1e-6);
+}
+
 TEST(ObstacleContacts, AParticleLeavingTheFloorIsLetGo) {
   // it starts exactly at the thickness, where a contact leaves it, and jumps up and sideways
   Obstacle floor;
