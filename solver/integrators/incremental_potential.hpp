@@ -42,7 +42,8 @@ struct StepPotentialWorkspace {
   Eigen::VectorXd coupling_tension;     ///< #S tension the couplings add (N)
 };
 
-/// Fills what the potential keeps for the whole step (the start directions u_n).
+/// Fills what the potential keeps for the whole step: the start directions u_n and projections
+/// d_n . u_n.
 void prepare_step_potential(const SpringModel& model, const StepPotential& potential,
                             StepPotentialWorkspace& workspace);
 
