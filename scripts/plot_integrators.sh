@@ -19,11 +19,14 @@ trap 'rm -f "$points" "$peer_csv"' EXIT
 fail() { echo "plot_integrators: $*" >&2; exit 1; }
 [[ $# -eq 0 || ( $# -eq 1 && $1 == --plot-only ) ]] || fail "usage: $0 [--plot-only]"
 command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
+# the methods plotted, and benchmarked (integrator_bench's other variants are left out)
+methods=(implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton
+  quasi_newton_multigrid_gradient)
 if [[ ${1:-} != --plot-only ]]; then
   bench=$build_dir/bench/integrator_bench
   peer=$build_dir/bench/bullet_sheet_bench
   [[ -x $bench && -x $peer ]] || fail "$bench or $peer not found; build them with scripts/build.sh"
-  OMP_NUM_THREADS=1 "$bench" --benchmark_filter=HangingSheet \
+  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="HangingSheet/($(IFS='|'; echo "${methods[*]}"))/" \
     --benchmark_out="$csv" --benchmark_out_format=csv
   "$peer" --benchmark_out="$peer_csv" --benchmark_out_format=csv
   # with its own header: its counters are not the same columns
@@ -45,7 +48,7 @@ awk -F, '
 
 # one line per method; a method that missed its tolerance on some step is dotted and says so
 plot="plot"
-for method in implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton; do
+for method in "${methods[@]}"; do
   unconverged=$(awk -v m="$method" '$1 == m { u += $4 } END { print u + 0 }' "$points")
   title=$method
   dash=1

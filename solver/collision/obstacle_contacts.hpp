@@ -25,12 +25,13 @@ namespace tissu {
 ///   accelerates at g (sin a - mu_k cos a), as Coulomb's law says.
 /// The obstacle's velocity there is its surface's: rigid motion, plus an animated mesh's
 /// deformation (the mean velocity over the step of the nearest point of its triangle).
-/// A particle whose step ends clear of an obstacle, or near its far side, but whose path crossed
-/// it (a thin obstacle, a fast particle, or a fast obstacle: the path is measured relative to the
-/// obstacle's surface, from where `start_x` would be had it moved with that surface) is stopped
+/// A particle whose step ends clear of an obstacle, or near its far side, but whose path went
+/// into it (a thin obstacle, a fast particle, or a fast obstacle: the path is measured relative to
+/// the obstacle's surface, from where `start_x` would be had it moved with that surface) is stopped
 /// where the path first touches it, or, if it started touching, kept on the side it started from:
-/// no tunnelling. Obstacles are resolved one after the other, at their place at `time_s` (the end
-/// of the step), their surface at the start of the step serving only to carry the path's start.
+/// no tunnelling. A path that ends clear and only grazed the thickness is left alone. Obstacles
+/// are resolved one after the other, at their place at `time_s` (the end of the step), their
+/// surface at the start of the step serving only to carry the path's start.
 /// A particle that the last of them leaves inside another deeper than its thickness (a crease
 /// where two overlap) goes back to its start, carried by that obstacle's surface, at its velocity.
 /// Pinned particles are left alone. Sets column p of `holding_normal` (3 x #P, resized) to the
