@@ -1,12 +1,11 @@
 #!/usr/bin/env bash
-# Runs bench/integrator_bench's hanging sheets (one thread) and plots each method's wall time per
-# frame against the particle count, log-log, into docs/integrators.png, with Bullet's soft body
-# on the same sheet (bench/bullet_sheet_bench) and dotted lines for the methods that missed their
-# tolerance; the benchmarks' CSV is kept next to it as docs/integrators.csv, and `--plot-only`
+# Runs bench/integrator_bench's hanging sheets (one thread) for the methods in `methods` below
+# and plots each one's wall time per frame against the particle count, log-log, into
+# docs/integrators.png, with Bullet's soft body on the same sheet (bench/bullet_sheet_bench) and
+# dotted lines for the methods that missed their tolerance; the benchmarks' CSV is kept next to it as docs/integrators.csv, and `--plot-only`
 # replots that CSV. Needs a Release build (scripts/build.sh) and gnuplot (scripts/setup.sh
-# installs it). About an hour: the converged reference trajectories and the slow methods at 512 x
-# 512 (newton_pd_matrix, the tight tolerances) take most of it; TISSU_SHEET_REFERENCES=0 skips
-# the references.
+# installs it). About half an hour, most of it the converged reference trajectories and the 512 x
+# 512 sheets; TISSU_SHEET_REFERENCES=0 skips the references; TISSU_BUILD_DIR picks the build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${TISSU_BUILD_DIR:-build/release}
