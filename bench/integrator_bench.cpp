@@ -77,10 +77,15 @@ CompiledCloth hanging_sheet(int particles_per_side) {
 }
 
 /// Preconditioner solves in the last step (a solve with the PD matrix, or a multigrid V-cycle):
-/// Newton's conjugate-gradient iterations, quasi-Newton's and PD's iterations.
+/// Newton's conjugate-gradient iterations, quasi-Newton's (and its Newton fallback's conjugate-
+/// gradient iterations) and PD's iterations.
 int preconditioner_solves_of(const SolverParams& params, const StepWorkspace& workspace) {
-  return params.integrator == Integrator::newton ? workspace.newton.cg_iterations
-                                                 : last_step_iterations(params, workspace);
+  if (params.integrator == Integrator::newton) return workspace.newton.cg_iterations;
+  if (params.integrator == Integrator::quasi_newton) {
+    const QuasiNewtonWorkspace& qn = workspace.quasi_newton;
+    return qn.iterations + (qn.newton_iterations > 0 ? workspace.newton.cg_iterations : 0);
+  }
+  return last_step_iterations(params, workspace);
 }
 
 SolverParams sheet_params(const Method& method, int steps_per_frame) {

@@ -130,6 +130,10 @@ struct QuasiNewtonOptions {
   /// sheet's motion is 5 to 6 % from the converged one with either initial Hessian (11.6 % and 51 %
   /// without), and the iterations per step no longer grow with the sheet (docs/benchmarks.md)
   double gradient_reduction = 0.0;
+  /// a step that reaches max_iterations is finished by Newton's method from L-BFGS's last iterate
+  /// (params.newton's options, with this tolerance and the multigrid preconditioner); false: it
+  /// ends there, not converged
+  bool newton_fallback = true;
 };
 
 /// Preconditioner of the conjugate gradient inside each Newton iteration.

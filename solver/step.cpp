@@ -196,7 +196,7 @@ int last_step_iterations(const SolverParams& params, const StepWorkspace& worksp
     case Integrator::newton:
       return workspace.newton.iterations;
     case Integrator::quasi_newton:
-      return workspace.quasi_newton.iterations;
+      return workspace.quasi_newton.iterations + workspace.quasi_newton.newton_iterations;
     case Integrator::symplectic_euler:
     case Integrator::position_verlet:
       return 0;

@@ -45,7 +45,8 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
 
 /// The iterations the last step made with `workspace`: conjugate-gradient iterations of
 /// implicit_euler, local/global iterations of projective_dynamics, Newton iterations of newton,
-/// L-BFGS iterations of quasi_newton; 0 for the explicit integrators.
+/// L-BFGS iterations of quasi_newton (with the Newton iterations of its newton_fallback); 0 for
+/// the explicit integrators.
 int last_step_iterations(const SolverParams& params, const StepWorkspace& workspace);
 
 }  // namespace tissu

@@ -164,6 +164,7 @@ QuasiNewtonOptions read_quasi_newton(JsonObjectReader quasi_newton) {
   o.history = quasi_newton.integer_or("history", o.history, 0, 1000);
   o.gradient_reduction =
       quasi_newton.number_or("gradient_reduction", o.gradient_reduction, between(0.0, 1.0, ""));
+  o.newton_fallback = quasi_newton.boolean_or("newton_fallback", o.newton_fallback);
   o.initial_hessian =
       read_named(quasi_newton, "initial_hessian", o.initial_hessian,
                  {QuasiNewtonInitialHessian::pd_matrix, QuasiNewtonInitialHessian::pd_multigrid});

@@ -43,10 +43,11 @@ void add_contact_hessian(const std::vector<ContactPlane>& contacts, const Eigen:
 // H = M (1/h^2 + c/h) + sum of the springs' positive semidefinite blocks + the couplings' terms
 // + the acting contact penalties' blocks
 void assemble_hessian(const SpringModel& model, const StepPotential& potential,
-                      const Eigen::VectorXd& x, NewtonWorkspace& newton) {
+                      const Eigen::VectorXd& x, const StepPotentialWorkspace& evaluated,
+                      NewtonWorkspace& newton) {
   const int springs = model.spring_count();
   const double h = potential.time_step_s;
-  const Eigen::Matrix3Xd& start_directions = newton.common.potential.start_directions;
+  const Eigen::Matrix3Xd& start_directions = evaluated.start_directions;
   const bool coupled = model.couplings.rows() > 0;
   const double viscous_scale = 1.0 / h;  // nu/h (N/m per N s/m)
   newton.spring_blocks.resize(springs);
@@ -59,8 +60,8 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
         spring_hessian_block(xi - xj, model.stiffness[s], model.rest_length[s],
                              start_directions.col(s), viscous_scale * model.damping[s]);
     if (coupled) {  // evaluate_step_potential() left the couplings' tensions at x
-      block -= upper_triangle(
-          coupling_tension_jacobian(xi, xj, newton.common.potential.coupling_tension[s], true));
+      block -=
+          upper_triangle(coupling_tension_jacobian(xi, xj, evaluated.coupling_tension[s], true));
       newton.coupled_spring_blocks[s] = full_block(block);
     }
     newton.spring_blocks[s] = block;
@@ -78,12 +79,12 @@ void assemble_hessian(const SpringModel& model, const StepPotential& potential,
 }
 
 // preconditioned = an approximation of H^-1 residual (zero on pinned particles)
-void precondition(NewtonPreconditioner preconditioner, NewtonWorkspace& newton) {
+void precondition(NewtonPreconditioner preconditioner, MinimisationWorkspace& common,
+                  NewtonWorkspace& newton) {
   if (preconditioner == NewtonPreconditioner::multigrid) {
-    newton.multigrid.apply(newton.residual, newton.common.preconditioned);
+    newton.multigrid.apply(newton.residual, common.preconditioned);
   } else {
-    newton.common.pd_matrix.solve(newton.common.system, newton.residual,
-                                  newton.common.preconditioned);
+    common.pd_matrix.solve(common.system, newton.residual, common.preconditioned);
   }
 }
 
@@ -91,15 +92,16 @@ void precondition(NewtonPreconditioner preconditioner, NewtonWorkspace& newton) 
 // forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
 // curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
 // the preconditioned gradient if that is nothing yet.
-int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled, NewtonWorkspace& newton,
-                        double forcing_term, int max_iterations) {
-  const Eigen::Index dofs = newton.common.gradient.size();
+int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled,
+                        MinimisationWorkspace& common, NewtonWorkspace& newton, double forcing_term,
+                        int max_iterations) {
+  const Eigen::Index dofs = common.gradient.size();
   newton.correction.setZero(dofs);
-  newton.residual = -newton.common.gradient;
-  precondition(preconditioner, newton);
-  newton.search = newton.common.preconditioned;
-  double rz = newton.residual.dot(newton.common.preconditioned);
-  const double target_n = forcing_term * newton.common.gradient.norm();
+  newton.residual = -common.gradient;
+  precondition(preconditioner, common, newton);
+  newton.search = common.preconditioned;
+  double rz = newton.residual.dot(common.preconditioned);
+  const double target_n = forcing_term * common.gradient.norm();
   int iteration = 0;
   while (iteration < max_iterations && newton.residual.norm() > target_n) {
     if (coupled) {
@@ -115,9 +117,9 @@ int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled, Newto
     const double step = rz / curvature;
     newton.correction += step * newton.search;
     newton.residual -= step * newton.hessian_search;
-    precondition(preconditioner, newton);
-    const double rz_next = newton.residual.dot(newton.common.preconditioned);
-    newton.search = newton.common.preconditioned + (rz_next / rz) * newton.search;
+    precondition(preconditioner, common, newton);
+    const double rz_next = newton.residual.dot(common.preconditioned);
+    newton.search = common.preconditioned + (rz_next / rz) * newton.search;
     rz = rz_next;
     ++iteration;
   }
@@ -126,11 +128,48 @@ int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled, Newto
 
 }  // namespace
 
+bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
+                       const StepPotential& potential, const Eigen::VectorXd& start_x,
+                       double& energy_j, MinimisationWorkspace& common, NewtonWorkspace& newton) {
+  check_options(options);
+  const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
+  const double force_scale_n = step_force_scale(model, potential);
+  const double first_gradient_n = common.gradient.norm();
+
+  newton.iterations = 0;
+  newton.cg_iterations = 0;
+  bool converged = first_gradient_n == 0.0;
+  while (!converged && newton.iterations < options.max_iterations) {
+    assemble_hessian(model, potential, common.x, common.potential, newton);
+    if (!pd_preconditioner) newton.multigrid.set_operator(newton.hessian, model.identity);
+    const double forcing_term = std::min(
+        max_forcing_term,
+        std::sqrt(relative_residual(common.gradient.norm(), force_scale_n, first_gradient_n)));
+    newton.cg_iterations +=
+        solve_newton_system(options.preconditioner, model.couplings.rows() > 0, common, newton,
+                            forcing_term, options.cg_max_iterations);
+    double trial_energy_j = energy_j;
+    if (!backtracking_line_search(model, potential, common.x, common.gradient, energy_j,
+                                  newton.correction, common.potential, common.trial_x,
+                                  common.trial_gradient, trial_energy_j)) {
+      break;  // no decrease along the Newton direction: round-off, or an indefinite coupling
+    }
+    ++newton.iterations;
+    newton.correction_ratio =
+        relative_correction(model, potential.time_step_s, newton.correction, common.trial_x,
+                            start_x, common.external_force, 1.0);
+    converged = newton.correction_ratio <= options.tolerance;
+    common.x.swap(common.trial_x);
+    common.gradient.swap(common.trial_gradient);
+    energy_j = trial_energy_j;
+  }
+  return converged;
+}
+
 StepStatus newton_step(const SpringModel& model, const SolverParams& params, State& state,
                        StepWorkspace& workspace) {
   const NewtonOptions& options = params.newton;
   check_options(options);
-  const double h = params.time_step;
   NewtonWorkspace& newton = workspace.newton;
 
   StepPotential potential;
@@ -140,37 +179,9 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
                                potential, energy_j, pd_preconditioner)) {
     return StepStatus::non_finite;
   }
-  const double force_scale_n = step_force_scale(model, potential);
-  const double first_gradient_n = newton.common.gradient.norm();
-
-  newton.iterations = 0;
-  newton.cg_iterations = 0;
-  bool converged = first_gradient_n == 0.0;
-  while (!converged && newton.iterations < options.max_iterations) {
-    assemble_hessian(model, potential, newton.common.x, newton);
-    if (!pd_preconditioner) newton.multigrid.set_operator(newton.hessian, model.identity);
-    const double forcing_term =
-        std::min(max_forcing_term, std::sqrt(relative_residual(newton.common.gradient.norm(),
-                                                               force_scale_n, first_gradient_n)));
-    newton.cg_iterations += solve_newton_system(options.preconditioner, model.couplings.rows() > 0,
-                                                newton, forcing_term, options.cg_max_iterations);
-    double trial_energy_j = energy_j;
-    if (!backtracking_line_search(model, potential, newton.common.x, newton.common.gradient,
-                                  energy_j, newton.correction, newton.common.potential,
-                                  newton.common.trial_x, newton.common.trial_gradient,
-                                  trial_energy_j)) {
-      break;  // no decrease along the Newton direction: round-off, or an indefinite coupling
-    }
-    ++newton.iterations;
-    newton.correction_ratio =
-        relative_correction(model, h, newton.correction, newton.common.trial_x, state.x,
-                            newton.common.external_force, 1.0);
-    converged = newton.correction_ratio <= options.tolerance;
-    newton.common.x.swap(newton.common.trial_x);
-    newton.common.gradient.swap(newton.common.trial_gradient);
-    energy_j = trial_energy_j;
-  }
-  return finish_step_minimisation(model, h, newton.common.x, converged, state);
+  const bool converged =
+      newton_iterations(model, options, potential, state.x, energy_j, newton.common, newton);
+  return finish_step_minimisation(model, params.time_step, newton.common.x, converged, state);
 }
 
 }  // namespace tissu

@@ -36,4 +36,13 @@ namespace tissu {
 StepStatus newton_step(const SpringModel& model, const SolverParams& params, State& state,
                        StepWorkspace& workspace);
 
+/// newton_step()'s iterations on a step whose potential start_step_minimisation() has prepared in
+/// `common`, from the iterate common.x (common.gradient and energy_j, the potential, at it; both
+/// updated), start_x the positions x_n at the step's start. Returns whether the tolerance was met.
+/// Lets another minimiser finish a step it could not converge (quasi_newton.hpp); with
+/// options.preconditioner = pd_matrix, common.pd_matrix must hold the PD matrix's factor.
+bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
+                       const StepPotential& potential, const Eigen::VectorXd& start_x,
+                       double& energy_j, MinimisationWorkspace& common, NewtonWorkspace& newton);
+
 }  // namespace tissu

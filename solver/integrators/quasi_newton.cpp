@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/integrators/newton.hpp"
 #include "solver/integrators/step_minimisation.hpp"
 #include "solver/parallel.hpp"
 
@@ -138,6 +139,15 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     qn.common.x.swap(qn.common.trial_x);
     qn.common.gradient.swap(qn.common.trial_gradient);
     energy_j = trial_energy_j;
+  }
+  qn.newton_iterations = 0;
+  if (!converged && options.newton_fallback) {
+    NewtonOptions newton = params.newton;
+    newton.tolerance = options.tolerance;
+    newton.preconditioner = NewtonPreconditioner::multigrid;  // needs no factor
+    converged =
+        newton_iterations(model, newton, potential, state.x, energy_j, qn.common, workspace.newton);
+    qn.newton_iterations = workspace.newton.iterations;
   }
   return finish_step_minimisation(model, h, qn.common.x, converged, state);
 }

@@ -21,7 +21,12 @@ namespace tissu {
 ///   the history gives none;
 /// - stops when the last quasi-Newton correction, relative to the step's displacement
 ///   (relative_correction()), is at most params.quasi_newton.tolerance, or after
-///   params.quasi_newton.max_iterations.
+///   params.quasi_newton.max_iterations;
+/// - a step L-BFGS has not converged by then is finished by newton_iterations() from its last
+///   iterate (params.quasi_newton.newton_fallback; the Newton options of params.newton with
+///   quasi_newton's tolerance and the multigrid preconditioner): the true, clamped Hessian
+///   converges the rare steps on which L-BFGS crawls (a cloth's release from rest, a light
+///   garment settling on a body; docs/benchmarks.md).
 /// Then v = (x - x_n)/h. Pinned particles move at their prescribed velocity. The same result for
 /// any number of OpenMP threads. Returns not_converged when the tolerance was not met (the state
 /// is advanced with the last iterate), non_finite on a non-finite prediction or potential.

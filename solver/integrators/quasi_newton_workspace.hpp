@@ -22,7 +22,8 @@ struct QuasiNewtonWorkspace {
   std::vector<double> coefficient;   ///< history: two-loop scratch
   int stored_pairs = 0;              ///< pairs in the history, the newest at (newest_pair)
   int newest_pair = -1;
-  int iterations = 0;             ///< iterations of the last step
+  int iterations = 0;             ///< L-BFGS iterations of the last step
+  int newton_iterations = 0;      ///< Newton iterations that finished it (newton_fallback)
   double correction_ratio = 0.0;  ///< the last relative_correction() (dimensionless)
   /// |g| at the end of the last step / max(|g| at its start, tolerance F), F = step_force_scale()
   double gradient_ratio = 0.0;

@@ -143,7 +143,8 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
            "preconditioner": "pd_matrix"})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
-           "initial_hessian": "pd_multigrid", "gradient_reduction": 0.1})",
+           "initial_hessian": "pd_multigrid", "gradient_reduction": 0.1,
+           "newton_fallback": false})",
        "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
@@ -169,6 +170,11 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
       0.0);
   EXPECT_THAT(with("simulation.quasi_newton.gradient_reduction", "1.5"),
               HasSubstr("simulation.quasi_newton.gradient_reduction: expected"));
+  EXPECT_FALSE(s.solver.quasi_newton.newton_fallback);
+  EXPECT_TRUE(
+      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.newton_fallback);
+  EXPECT_THAT(with("simulation.quasi_newton.newton_fallback", "1"),
+              HasSubstr("simulation.quasi_newton.newton_fallback: expected"));
   EXPECT_EQ(
       parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.initial_hessian,
       QuasiNewtonInitialHessian::pd_matrix);

@@ -208,6 +208,35 @@ TEST(QuasiNewtonStop, AGradientReductionAsksNoMoreThanTheToleranceOfAClothAtRest
   }
 }
 
+TEST(QuasiNewtonFallback, NewtonFinishesAStepLbfgsCannotAndReachesItsMinimiser) {
+  // the stiff sheet's first step at a tolerance two L-BFGS iterations cannot meet: Newton's
+  // iterations from L-BFGS's last iterate converge it, to the step Newton alone takes
+  State initial;
+  const SpringModel model = test::stiff_sheet(21, initial);
+  State reference = initial;
+  ASSERT_EQ(step(model, minimiser(minimisers[0], 1.0 / 30.0, 1e-10), reference), StepStatus::ok);
+  const double displacement = (reference.x - initial.x).lpNorm<Eigen::Infinity>();
+  for (const int method : {1, 2}) {
+    SolverParams params = minimiser(minimisers[method], 1.0 / 30.0, 1e-6);
+    params.quasi_newton.max_iterations = 2;
+    params.newton.max_iterations = 50;
+    State state = initial;
+    StepWorkspace workspace;
+    EXPECT_EQ(step(model, params, state, workspace), StepStatus::ok) << minimisers[method].name;
+    EXPECT_EQ(workspace.quasi_newton.iterations, 2) << minimisers[method].name;
+    EXPECT_GT(workspace.quasi_newton.newton_iterations, 0) << minimisers[method].name;
+    EXPECT_EQ(last_step_iterations(params, workspace), 2 + workspace.newton.iterations);
+    EXPECT_LT((state.x - reference.x).lpNorm<Eigen::Infinity>(), 1e-4 * displacement)
+        << minimisers[method].name;
+
+    params.quasi_newton.newton_fallback = false;
+    State without = initial;
+    EXPECT_EQ(step(model, params, without, workspace), StepStatus::not_converged)
+        << minimisers[method].name;
+    EXPECT_EQ(workspace.quasi_newton.newton_iterations, 0) << minimisers[method].name;
+  }
+}
+
 TEST(BackwardEulerMinimisers, PinnedParticlesFollowTheirVelocityAndTheSheetFalls) {
   for (const Minimiser& method : minimisers) {
     State state;
