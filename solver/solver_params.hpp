@@ -106,10 +106,11 @@ struct ProjectiveDynamicsOptions {
 enum class QuasiNewtonInitialHessian {
   pd_matrix,     ///< its sparse Cholesky factor: an exact solve, whose cost grows with the factor's
                  ///< fill (17 to 19 times from 81 x 81 to 256 x 256 particles)
-  pd_multigrid,  ///< one smoothed-aggregation V-cycle (pd_multigrid.hpp): near-linear cost, no
-                 ///< factorisation after a remesh; an approximate inverse, with which the
-                 ///< correction test of `tolerance` stops steps early (the stiff sheet at 1e-2
-                 ///< hung 0.77 m above the converged motion): use 1e-3 (docs/benchmarks.md)
+  pd_multigrid,  ///< the default: one smoothed-aggregation V-cycle (pd_multigrid.hpp), near-linear
+                 ///< cost, no factorisation after a remesh; an approximate inverse, with which the
+                 ///< correction test of `tolerance` alone stops steps early (the stiff sheet at
+                 ///< 1e-2 hung 0.77 m above the converged motion): keep gradient_reduction
+                 ///< (docs/benchmarks.md)
 };
 
 struct QuasiNewtonOptions {
@@ -121,7 +122,7 @@ struct QuasiNewtonOptions {
   double tolerance = 1e-2;
   int max_iterations = 200;  ///< a step that has not met the tolerance by then is not_converged
   int history = 5;           ///< L-BFGS pairs kept, >= 0 (Liu et al. 2017 keep 5; 0: PD-like)
-  QuasiNewtonInitialHessian initial_hessian = QuasiNewtonInitialHessian::pd_matrix;
+  QuasiNewtonInitialHessian initial_hessian = QuasiNewtonInitialHessian::pd_multigrid;
   /// in [0, 1]: when > 0, a step also stops only once its gradient's norm is at most this
   /// fraction of the step's first, or of the tolerance's share of the forces the step balances
   /// (tolerance F, F = step_force_scale()) when that is larger, so that a cloth starting the step
@@ -129,7 +130,7 @@ struct QuasiNewtonOptions {
   /// alone stops L-BFGS early on the soft modes, the more so with the V-cycle: at 0.1 the stiff
   /// sheet's motion is 5 to 6 % from the converged one with either initial Hessian (11.6 % and 51 %
   /// without), and the iterations per step no longer grow with the sheet (docs/benchmarks.md)
-  double gradient_reduction = 0.0;
+  double gradient_reduction = 0.1;
   /// a step that reaches max_iterations is finished by Newton's method from L-BFGS's last iterate
   /// (params.newton's options, with this tolerance and the multigrid preconditioner); false: it
   /// ends there, not converged

@@ -96,26 +96,28 @@ TEST(CutWithSelfCollision, PiecesThatMeetAfterTheCutDoNotPassThroughEachOther) {
           "cut_pieces_meet");
   ASSERT_TRUE(r.result.ok) << r.result.failure;
   EXPECT_EQ(r.frames.back().pieces, 3);  // the strip on the pins, and the two halves
-  for (std::size_t f = 0; f < r.surfaces.size(); f += 3) {
-    EXPECT_EQ(test::intersecting_face_pairs(r.surfaces[f]), 0) << "frame " << f;
-  }
-  // they met: particles of the upper half (material z between the cuts) lie within 1 cm of
-  // particles of the lower half (16 of them since the floor's friction counts the weight of the
-  // upper layer pressing the lower one on it; more than 20 before)
-  const MaterialSurface& last = r.surfaces.back();
-  int close = 0;
-  for (std::size_t u = 0; u < last.rest_m.size(); ++u) {
-    const double z = last.rest_m[u].z();
-    if (!(z > 0.5 + 1e-9 && z < 0.66)) continue;
-    for (std::size_t l = 0; l < last.rest_m.size(); ++l) {
-      if (last.rest_m[l].z() < 0.5 - 1e-9 &&
-          (last.current.vertices[u] - last.current.vertices[l]).norm() < 0.01) {
-        ++close;
-        break;
+  // they met: at some frame, particles of the upper half (material z between the cuts) lie within
+  // 1 cm of particles of the lower half (35 to 42 of them as it lands; where it then comes to rest,
+  // on the lower half or beside it, varies with the solver's round-off)
+  int most_close = 0;
+  for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
+    const MaterialSurface& surface = r.surfaces[f];
+    EXPECT_EQ(test::intersecting_face_pairs(surface), 0) << "frame " << f;
+    int close = 0;
+    for (std::size_t u = 0; u < surface.rest_m.size(); ++u) {
+      const double z = surface.rest_m[u].z();
+      if (!(z > 0.5 + 1e-9 && z < 0.66)) continue;
+      for (std::size_t l = 0; l < surface.rest_m.size(); ++l) {
+        if (surface.rest_m[l].z() < 0.5 - 1e-9 &&
+            (surface.current.vertices[u] - surface.current.vertices[l]).norm() < 0.01) {
+          ++close;
+          break;
+        }
       }
     }
+    most_close = std::max(most_close, close);
   }
-  EXPECT_GT(close, 10);
+  EXPECT_GT(most_close, 10);
 }
 
 TEST(CutWithSelfCollision, TheTearingDemoTearsAsItDoesWithoutSelfCollision) {
