@@ -173,6 +173,12 @@ struct SolverParams {
   /// on a floor sinks g h^2 / beta into its thickness during the step, and is projected out after
   /// it); 0: obstacles act only after the step, as for the other integrators
   double obstacle_penalty = 0.0;
+  /// with obstacle_penalty: Coulomb friction inside the step too, its normal force lagged from the
+  /// last step (contact_planes.hpp; Li et al. 2020), so that friction cannot hold a particle its
+  /// springs pull harder than mu times its normal force (after the step alone, on velocity, it
+  /// holds stretched springs of a stiff cloth lying on a floor); 1.1 to 2.8 times slower on the
+  /// garment and drape demos (docs/benchmarks.md). false: friction after the step only
+  bool friction_in_step = false;
   SelfCollisionOptions self_collision;  ///< the cloth against itself, after every step
   /// the largest relative stretch of a structural spring (dimensionless, e.g. 0.1 for 10 %),
   /// imposed after every step, after the contacts (strain_limit.hpp); 0: none

@@ -154,15 +154,19 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     // obstacles first: a particle an obstacle holds is then immovable for the cloth's own contacts
     const double end_time_s = state.time + params.time_step;
     const std::vector<ContactPlane>* held = minimised_contacts(params, workspace);
-    if (held != nullptr && !held->empty()) {  // reuses the buffer: no allocation per step
+    if (held != nullptr && !held->empty()) {  // reuses the buffers: no allocation per step
       contact_normal_impulses(model, *held, static_cast<int>(params.obstacles.size()),
                               params.time_step, state.x, workspace.obstacle_penalty_impulse);
+      workspace.obstacle_impulse_after_step = workspace.obstacle_penalty_impulse;
+      remove_friction_given_in_step(*held, state.x, workspace.obstacle_impulse_after_step);
     } else {
       workspace.obstacle_penalty_impulse.resize(0, 0);
+      workspace.obstacle_impulse_after_step.resize(0, 0);
     }
+    workspace.obstacle_penalty_impulse_model = model.identity;  // the next step's lagged friction
     workspace.obstacle_contacts = resolve_obstacle_contacts(
         model, params.obstacles, params.time_step, end_time_s, workspace.step_start_x, state,
-        workspace.obstacle_holding_normal, workspace.obstacle_penalty_impulse,
+        workspace.obstacle_holding_normal, workspace.obstacle_impulse_after_step,
         &workspace.obstacle_distances);
     const bool both = params.self_collision.enabled && !params.obstacles.empty();
     if (both) workspace.before_self_collision_x = state.x;

@@ -225,6 +225,7 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.solver.obstacle_penalty =
       simulation.number_or("obstacle_penalty", s.solver.obstacle_penalty, non_negative(""));
+  s.solver.friction_in_step = simulation.boolean_or("friction_in_step", s.solver.friction_in_step);
   s.solver.strain_limit = simulation.number_or("strain_limit", s.solver.strain_limit,
                                                between(0.0, 10.0, " (0: none; 0.1: 10 %)"));
   s.threads = simulation.integer_or("threads", 0, 0, 1024);

@@ -57,6 +57,7 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
       plane.normal = at_x0.normal;
       plane.point = point;
       plane.stiffness_n_per_m = per_kg * model.mass[p];
+      plane.start = from;
     }
   }
   for (std::size_t slot = 0; slot < slots.size(); ++slot) {
@@ -64,16 +65,57 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
   }
 }
 
+void lag_contact_friction(const SpringModel& model, const std::vector<Obstacle>& obstacles,
+                          const Eigen::MatrixXd* lagged_impulse, double time_step_s,
+                          std::vector<ContactPlane>& planes) {
+  const bool lagged = lagged_impulse != nullptr &&
+                      lagged_impulse->rows() == static_cast<Eigen::Index>(obstacles.size()) &&
+                      lagged_impulse->cols() == model.particle_count();
+  for (ContactPlane& plane : planes) {
+    plane.slip_scale_m = friction_slip_speed_m_per_s * time_step_s;
+    if (!lagged) continue;
+    const double normal_force_n =  // lambda = m J / h
+        model.mass[plane.particle] * (*lagged_impulse)(plane.obstacle, plane.particle) /
+        time_step_s;
+    plane.friction_n = obstacles[plane.obstacle].kinetic_friction * normal_force_n;
+  }
+}
+
+void remove_friction_given_in_step(const std::vector<ContactPlane>& planes,
+                                   const Eigen::VectorXd& x, Eigen::MatrixXd& impulse_m_per_s) {
+  for (const ContactPlane& plane : planes) {
+    if (plane.friction_n > 0.0 && contact_slip_m(plane, x.segment<3>(3 * plane.particle)).norm() >
+                                      sliding_slip_ratio * plane.slip_scale_m) {
+      impulse_m_per_s(plane.obstacle, plane.particle) = 0.0;
+    }
+  }
+}
+
 double add_contact_potential(const std::vector<ContactPlane>& planes, const Eigen::VectorXd& x,
                              Eigen::VectorXd* gradient) {
   double energy_j = 0.0;
   for (const ContactPlane& plane : planes) {
-    const double depth_m = contact_depth_m(plane, x.segment<3>(3 * plane.particle));
-    if (depth_m == 0.0) continue;
-    energy_j += 0.5 * plane.stiffness_n_per_m * depth_m * depth_m;
-    if (gradient != nullptr) {
-      gradient->segment<3>(3 * plane.particle) -=
-          (plane.stiffness_n_per_m * depth_m) * plane.normal;
+    const auto xp = x.segment<3>(3 * plane.particle);
+    const double depth_m = contact_depth_m(plane, xp);
+    if (depth_m > 0.0) {
+      energy_j += 0.5 * plane.stiffness_n_per_m * depth_m * depth_m;
+      if (gradient != nullptr) {
+        gradient->segment<3>(3 * plane.particle) -=
+            (plane.stiffness_n_per_m * depth_m) * plane.normal;
+      }
+    }
+    if (plane.friction_n > 0.0) {
+      const Eigen::Vector3d slip = contact_slip_m(plane, xp);
+      const double y = slip.norm();
+      const double e = plane.slip_scale_m;
+      // f0 and f1(y) / y = f0'(y) / y (IPC's smoothed Coulomb friction, Li et al. 2020, eq. 15)
+      const bool ramp = y < e;
+      energy_j +=
+          plane.friction_n * (ramp ? (-y * y * y / (3.0 * e * e) + y * y / e + e / 3.0) : y);
+      if (gradient != nullptr) {
+        const double force_per_slip = ramp ? (2.0 / e - y / (e * e)) : 1.0 / y;
+        gradient->segment<3>(3 * plane.particle) += plane.friction_n * force_per_slip * slip;
+      }
     }
   }
   return energy_j;

@@ -4,8 +4,10 @@
 /// the step is held by the obstacle's offset surface there, linearised to a plane, through a
 /// one-sided quadratic penalty added to backward Euler's incremental potential (the penalty
 /// contacts of Baraff & Witkin 1998 and Martin et al. 2011 taken into the potential, as IPC, Li et
-/// al. 2020, takes its barrier). The contact projection after the step (obstacle_contacts.hpp)
-/// stays, and applies Coulomb friction with the normal impulse the penalty gave. CGAL-free.
+/// al. 2020, takes its barrier), and by Coulomb friction in the potential too, its normal force
+/// lagged from the last step (IPC's lagged friction, Li et al. 2020, section 5). The contact
+/// projection after the step (obstacle_contacts.hpp) stays, and applies Coulomb friction with the
+/// normal impulse the penalty gave where no friction acted in the step. CGAL-free.
 
 #include <Eigen/Core>
 #include <vector>
@@ -16,15 +18,28 @@
 
 namespace tissu {
 
+/// Below this tangential speed, friction in the step grows smoothly from zero to its bound (IPC's
+/// epsilon_v, Li et al. 2020): held cloth creeps at most this fast (m/s).
+constexpr double friction_slip_speed_m_per_s = 1e-3;
+
 /// One particle near one obstacle, the obstacle's surface offset by its thickness linearised near
 /// the particle (find_contact_planes()): the particle may not go below the plane through `point`
-/// with normal `normal`. Penalty energy 1/2 k max(0, (point - x) . normal)^2 (J).
+/// with normal `normal`. Penalty energy 1/2 k max(0, (point - x) . normal)^2 (J). Friction energy
+/// F f0(|u|) (J), u = P (x - start) the particle's slip along the plane over the step (P = I - n
+/// n^T), F = mu_k lambda its bound (N), and f0 IPC's smoothed |u|: f0(y) = -y^3 / (3 e^2) + y^2 / e
+/// + e / 3 below e = friction_slip_speed_m_per_s h, y above, so that the friction force F f0'(|u|)
+/// grows from 0 at rest to F at a slip of e and stays F beyond.
 struct ContactPlane {
   int particle = 0;
   int obstacle = 0;                                 ///< index in SolverParams::obstacles
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< on the offset surface at the step's end (m)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, outwards
   double stiffness_n_per_m = 0.0;                     ///< k = beta m / h^2 (N/m)
+  /// the particle's start, carried by the obstacle's surface over the step (m): where it would be
+  /// with no slip
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();
+  double friction_n = 0.0;    ///< F = mu_k lambda, lambda the normal force lagged (N); 0: none
+  double slip_scale_m = 0.0;  ///< e = friction_slip_speed_m_per_s h (m)
 };
 
 /// The planes of the free particles within reach of an obstacle where it is at the step's end
@@ -45,14 +60,42 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
                          std::vector<ContactPlane>& planes,
                          ObstacleDistanceCache* distances = nullptr);
 
+/// Gives each plane its friction bound from the last step's normal impulses per unit mass
+/// `lagged_impulse` (#obstacles x #P, m/s, contact_normal_impulses() of that step, on the same
+/// model; nullptr: none, as after a remesh): lambda = m J / h, F = mu_k lambda (the obstacle's
+/// kinetic_friction), and its slip scale e.
+void lag_contact_friction(const SpringModel& model, const std::vector<Obstacle>& obstacles,
+                          const Eigen::MatrixXd* lagged_impulse, double time_step_s,
+                          std::vector<ContactPlane>& planes);
+
+/// A plane whose particle slipped more than this many slip scales e over the step slid, its
+/// friction at its bound: 10 e is a slip of 1 cm/s.
+constexpr double sliding_slip_ratio = 10.0;
+
+/// Zeroes the entries of `impulse_m_per_s` (#obstacles x #P) whose plane's particle slid in the
+/// step to x (3#P, m) with friction in it: that friction has acted at its bound, the friction
+/// after the step must not apply it again (and, by the velocity alone, hold a particle its
+/// springs pull harder than friction can). Slower particles keep it: friction after the step then
+/// holds them exactly, as it holds a particle on a slope that friction in the step, with its
+/// smoothed start and its lagged normal force, lets creep.
+void remove_friction_given_in_step(const std::vector<ContactPlane>& planes,
+                                   const Eigen::VectorXd& x, Eigen::MatrixXd& impulse_m_per_s);
+
 /// How far x (3, m) is below the plane (m), 0 when above it.
 inline double contact_depth_m(const ContactPlane& plane, const Eigen::Vector3d& x) {
   const double depth_m = (plane.point - x).dot(plane.normal);
   return depth_m > 0.0 ? depth_m : 0.0;
 }
 
-/// The planes' penalty energy at x (3#P, m) (J); with a gradient, adds the penalty's gradient
-/// -k depth n to it (3#P, N). Summed in the planes' order: deterministic.
+/// The plane's slip u = P (x - start) along it over the step (3, m).
+inline Eigen::Vector3d contact_slip_m(const ContactPlane& plane, const Eigen::Vector3d& x) {
+  const Eigen::Vector3d moved = x - plane.start;
+  return moved - moved.dot(plane.normal) * plane.normal;
+}
+
+/// The planes' penalty and friction energy at x (3#P, m) (J); with a gradient, adds their
+/// gradient to it (3#P, N): -k depth n, and F f0'(|u|) u / |u|. Summed in the planes' order:
+/// deterministic.
 double add_contact_potential(const std::vector<ContactPlane>& planes, const Eigen::VectorXd& x,
                              Eigen::VectorXd* gradient);
 

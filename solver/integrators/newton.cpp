@@ -22,12 +22,31 @@ void check_options(const NewtonOptions& options) {
   }
 }
 
-// a contact plane's penalty, where it acts, adds k n n^T to its particle's diagonal block
+// a contact plane's friction F f0(|u|), u = P (x - start), has the Hessian (positive semidefinite)
+// F/e^2 ((2e - y) P - y u^ u^T) while the slip y = |u| is below e, F/y (P - u^ u^T) beyond
+Eigen::Matrix3d friction_hessian(const ContactPlane& plane, const Eigen::Vector3d& x) {
+  const Eigen::Matrix3d tangential =
+      Eigen::Matrix3d::Identity() - plane.normal * plane.normal.transpose();
+  const Eigen::Vector3d slip = contact_slip_m(plane, x);
+  const double y = slip.norm();
+  const double e = plane.slip_scale_m;
+  const Eigen::Matrix3d along =
+      y > 0.0 ? Eigen::Matrix3d(slip * slip.transpose() / (y * y)) : Eigen::Matrix3d::Zero();
+  if (y < e) return plane.friction_n / (e * e) * ((2.0 * e - y) * tangential - y * along);
+  return plane.friction_n / y * (tangential - along);
+}
+
+// a contact plane's penalty, where it acts, adds k n n^T to its particle's diagonal block, and its
+// friction its Hessian
 void add_contact_hessian(const std::vector<ContactPlane>& contacts, const Eigen::VectorXd& x,
                          bool coupled, NewtonWorkspace& newton) {
   for (const ContactPlane& plane : contacts) {
-    if (contact_depth_m(plane, x.segment<3>(3 * plane.particle)) == 0.0) continue;
-    const Eigen::Matrix3d block = plane.stiffness_n_per_m * plane.normal * plane.normal.transpose();
+    const Eigen::Vector3d xp = x.segment<3>(3 * plane.particle);
+    const double depth_m = contact_depth_m(plane, xp);
+    if (depth_m == 0.0 && plane.friction_n == 0.0) continue;
+    Eigen::Matrix3d block = Eigen::Matrix3d::Zero();
+    if (depth_m > 0.0) block += plane.stiffness_n_per_m * plane.normal * plane.normal.transpose();
+    if (plane.friction_n > 0.0) block += friction_hessian(plane, xp);
     newton.hessian.block(newton.hessian.diagonal[plane.particle]) += upper_triangle(block);
     if (coupled) {
       for (int r = 0; r < 3; ++r) {
@@ -176,7 +195,8 @@ StepStatus newton_step(const SpringModel& model, const SolverParams& params, Sta
   double energy_j = 0.0;
   const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
   if (!start_step_minimisation(model, params, state, newton.common, &workspace.obstacle_distances,
-                               potential, energy_j, pd_preconditioner)) {
+                               lagged_penalty_impulse(model, workspace), potential, energy_j,
+                               pd_preconditioner)) {
     return StepStatus::non_finite;
   }
   const bool converged =

@@ -94,7 +94,8 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   double energy_j = 0.0;
   const bool multigrid = options.initial_hessian == QuasiNewtonInitialHessian::pd_multigrid;
   if (!start_step_minimisation(model, params, state, qn.common, &workspace.obstacle_distances,
-                               potential, energy_j, !multigrid)) {
+                               lagged_penalty_impulse(model, workspace), potential, energy_j,
+                               !multigrid)) {
     return StepStatus::non_finite;
   }
   if (multigrid) {  // with the PD matrix's factor, start_step_minimisation() prepared it

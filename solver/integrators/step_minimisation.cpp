@@ -9,7 +9,8 @@ namespace tissu {
 
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
-                             ObstacleDistanceCache* obstacle_distances, StepPotential& potential,
+                             ObstacleDistanceCache* obstacle_distances,
+                             const Eigen::MatrixXd* lagged_normal_impulse, StepPotential& potential,
                              double& energy_j, bool use_pd_matrix) {
   const double h = params.time_step;
   Environment explicit_forces = params.environment;
@@ -36,6 +37,9 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   }
   find_contact_planes(model, params.obstacles, params.obstacle_penalty, h, state.time + h, state.x,
                       workspace.x, workspace.contacts, obstacle_distances);
+  if (params.friction_in_step) {
+    lag_contact_friction(model, params.obstacles, lagged_normal_impulse, h, workspace.contacts);
+  }
   if (!workspace.contacts.empty()) potential.contacts = &workspace.contacts;
   prepare_step_potential(model, potential, workspace.potential);
   energy_j = evaluate_step_potential(model, potential, workspace.x, workspace.potential,

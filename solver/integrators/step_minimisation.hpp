@@ -17,13 +17,16 @@ namespace tissu {
 /// x = x_0 = x_n + h v_n, with `use_pd_matrix` the PD matrix for this model and h and its
 /// factorisation (a Newton step preconditioned by multigrid needs neither), the potential's start
 /// directions and obstacle contacts (with SolverParams::obstacle_penalty; `obstacle_distances`, if
-/// given and prepared for this step, skips the mesh queries it can answer), and E(x_0) with its
+/// given and prepared for this step, skips the mesh queries it can answer; with
+/// SolverParams::friction_in_step their friction from `lagged_normal_impulse`,
+/// lag_contact_friction()), and E(x_0) with its
 /// gradient. Fills `potential` (which points into `workspace` and
 /// `state`). False when something is not finite (or the PD matrix cannot be factorised): the step
 /// is then non_finite.
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
-                             ObstacleDistanceCache* obstacle_distances, StepPotential& potential,
+                             ObstacleDistanceCache* obstacle_distances,
+                             const Eigen::MatrixXd* lagged_normal_impulse, StepPotential& potential,
                              double& energy_j, bool use_pd_matrix = true);
 
 /// Ends a step at the iterate x (3#P, m): v = (x - x_n)/h for the free particles, then x (pinned

@@ -145,9 +145,12 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
            "initial_hessian": "pd_matrix", "gradient_reduction": 0.2,
            "newton_fallback": false})",
-       "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100"});
+       "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100",
+       "simulation.friction_in_step=true"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
+  EXPECT_TRUE(s.solver.friction_in_step);
+  EXPECT_FALSE(parse_scenario(test::minimal_scenario, "s.json", {}).solver.friction_in_step);
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.obstacle_penalty,
                    0.0);
   EXPECT_EQ(with("simulation.obstacle_penalty", "-1"),
