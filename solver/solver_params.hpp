@@ -176,7 +176,7 @@ struct SolverParams {
   /// with obstacle_penalty: Coulomb friction inside the step too, its normal force lagged from the
   /// last step (contact_planes.hpp; Li et al. 2020), so that friction cannot hold a particle its
   /// springs pull harder than mu times its normal force (after the step alone, on velocity, it
-  /// holds stretched springs of a stiff cloth lying on a floor); 1.1 to 2.8 times slower on the
+  /// holds stretched springs of a stiff cloth lying on a floor); 0.9 to 1.4 times the time of the
   /// garment and drape demos (docs/benchmarks.md). false: friction after the step only
   bool friction_in_step = false;
   SelfCollisionOptions self_collision;  ///< the cloth against itself, after every step

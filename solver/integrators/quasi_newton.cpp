@@ -35,6 +35,22 @@ void resize_history(int dofs, int history, QuasiNewtonWorkspace& qn) {
   clear_history(qn);
 }
 
+// by free particle, the stiffness of its planes' friction on its smoothed start, 2F/e (N/m; the
+// friction's Hessian at no slip, contact_planes.hpp); empty when no plane has friction. On the
+// V-cycle's operator it gives H_0 what holds a resting cloth's sliding modes, which the springs
+// do not resist.
+void friction_stiffness_by_free_particle(const std::vector<ContactPlane>& contacts,
+                                         const PdSystem& system, Eigen::VectorXd& stiffness) {
+  stiffness.resize(0);
+  for (const ContactPlane& plane : contacts) {
+    if (!(plane.friction_n > 0.0)) continue;
+    if (stiffness.size() == 0) {
+      stiffness.setZero(static_cast<Eigen::Index>(system.free_particles.size()));
+    }
+    stiffness[system.free_index[plane.particle]] += 2.0 * plane.friction_n / plane.slip_scale_m;
+  }
+}
+
 // preconditioned = H_0^-1 q, the PD matrix on the free particles (pinned rows stay zero), solved
 // by its factor or approximated by multigrid
 void apply_initial_inverse_hessian(const SpringModel& model, QuasiNewtonInitialHessian kind,
@@ -101,6 +117,9 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   if (multigrid) {  // with the PD matrix's factor, start_step_minimisation() prepared it
     update_pd_system(model, h, qn.common.system);
     if (!qn.pd_multigrid.prepare(model, qn.common.system)) return StepStatus::non_finite;
+    friction_stiffness_by_free_particle(qn.common.contacts, qn.common.system,
+                                        qn.friction_stiffness);
+    if (!qn.pd_multigrid.set_extra_diagonal(qn.friction_stiffness)) return StepStatus::non_finite;
   }
   resize_history(3 * particles, options.history, qn);
   const double first_gradient_n = qn.common.gradient.norm();

@@ -13,14 +13,15 @@ namespace tissu {
 /// Buffers of quasi_newton_step(); sized on first use, reused afterwards. The initial Hessian
 /// (the PD matrix, in `common`) is rebuilt only when the model (its identity) or h changes.
 struct QuasiNewtonWorkspace {
-  MinimisationWorkspace common;      ///< potential, iterate, PD matrix (the initial Hessian)
-  PdMultigrid pd_multigrid;          ///< the PD matrix's V-cycle, the other initial Hessian
-  Eigen::VectorXd direction;         ///< 3#P the search direction (m)
-  Eigen::MatrixXd position_changes;  ///< 3#P x history: s_k = x_{k+1} - x_k (m)
-  Eigen::MatrixXd gradient_changes;  ///< 3#P x history: t_k = g_{k+1} - g_k (N)
-  std::vector<double> curvature;     ///< history: 1 / (s_k . t_k) (1/J)
-  std::vector<double> coefficient;   ///< history: two-loop scratch
-  int stored_pairs = 0;              ///< pairs in the history, the newest at (newest_pair)
+  MinimisationWorkspace common;        ///< potential, iterate, PD matrix (the initial Hessian)
+  PdMultigrid pd_multigrid;            ///< the PD matrix's V-cycle, the other initial Hessian
+  Eigen::VectorXd friction_stiffness;  ///< #F friction's stiffness added to it (N/m), or empty
+  Eigen::VectorXd direction;           ///< 3#P the search direction (m)
+  Eigen::MatrixXd position_changes;    ///< 3#P x history: s_k = x_{k+1} - x_k (m)
+  Eigen::MatrixXd gradient_changes;    ///< 3#P x history: t_k = g_{k+1} - g_k (N)
+  std::vector<double> curvature;       ///< history: 1 / (s_k . t_k) (1/J)
+  std::vector<double> coefficient;     ///< history: two-loop scratch
+  int stored_pairs = 0;                ///< pairs in the history, the newest at (newest_pair)
   int newest_pair = -1;
   int iterations = 0;             ///< L-BFGS iterations of the last step
   int newton_iterations = 0;      ///< Newton iterations that finished it (newton_fallback)

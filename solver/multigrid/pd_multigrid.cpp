@@ -140,8 +140,10 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     const Eigen::VectorXd diagonal = a.diagonal();
     const double radius_bound = jacobi_radius_bound(a, diagonal);
     // omega rho(D^-1 A) <= 2 smoother_damping < 2: the sweep converges, the cycle is definite
-    fine.jacobi_scale =
-        (smoother_damping * 2.0 / std::max(radius_bound, 2.0)) * diagonal.cwiseInverse();
+    // (and stays so with an extra diagonal, which only lowers Gershgorin's bound)
+    fine.jacobi_damping = smoother_damping * 2.0 / std::max(radius_bound, 2.0);
+    fine.jacobi_scale = fine.jacobi_damping * diagonal.cwiseInverse();
+    fine.base_matrix = a;
     fine.solution.setZero(3, nodes);
     fine.residual.setZero(3, nodes);
     fine.right_side.setZero(3, nodes);
@@ -170,11 +172,40 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     next.matrix = std::move(coarse);
     m_levels.push_back(std::move(next));
   }
-  m_coarsest = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
-  m_coarsest->compute(Eigen::SparseMatrix<double>(m_levels.back().matrix));
-  if (m_coarsest->info() != Eigen::Success) return false;
+  m_extra = false;
+  if (!factor_coarsest()) return false;
   m_generation = system.generation;
   return true;
+}
+
+bool PdMultigrid::factor_coarsest() {
+  m_coarsest = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
+  m_coarsest->compute(Eigen::SparseMatrix<double>(m_levels.back().matrix));
+  return m_coarsest->info() == Eigen::Success;
+}
+
+bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
+  if (m_levels.empty() || (extra.size() == 0 && !m_extra)) return true;
+  m_extra = extra.size() > 0;
+  RowMatrix added;  // R D P at the level below, as the levels go down
+  for (std::size_t index = 0; index < m_levels.size(); ++index) {
+    PdMultigridLevel& level = m_levels[index];
+    if (!m_extra) {
+      level.matrix = level.base_matrix;
+    } else if (index == 0) {
+      RowMatrix d(extra.size(), extra.size());
+      d.setIdentity();
+      d.diagonal() = extra;
+      added = d;
+      level.matrix = level.base_matrix + added;
+    } else {
+      const PdMultigridLevel& fine = m_levels[index - 1];
+      added = RowMatrix(fine.restrictor * RowMatrix(added * fine.prolongator));
+      level.matrix = level.base_matrix + added;
+    }
+    level.jacobi_scale = level.jacobi_damping * level.matrix.diagonal().cwiseInverse();
+  }
+  return factor_coarsest();
 }
 
 void PdMultigrid::cycle(int index) {

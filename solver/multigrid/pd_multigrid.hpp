@@ -26,7 +26,9 @@ namespace tissu {
 
 /// One level of the hierarchy: its operator and the maps to and from the next level.
 struct PdMultigridLevel {
-  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix;       ///< n x n (kg/s^2)
+  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix;       ///< n x n (kg/s^2), with the extra
+  Eigen::SparseMatrix<double, Eigen::RowMajor> base_matrix;  ///< n x n, without (kg/s^2)
+  double jacobi_damping = 0.0;                               ///< omega of the sweeps
   Eigen::VectorXd jacobi_scale;                              ///< n: omega / A_ii (s^2/kg)
   Eigen::SparseMatrix<double, Eigen::RowMajor> prolongator;  ///< n x n_c, smoothed
   Eigen::SparseMatrix<double, Eigen::RowMajor> restrictor;   ///< n_c x n, its transpose
@@ -45,6 +47,14 @@ class PdMultigrid {
   /// if A_ff is not positive definite (a free particle without mass or springs).
   bool prepare(const SpringModel& model, const PdSystem& system);
 
+  /// Adds diag(extra) (#F, kg/s^2, >= 0, by free particle) to A_ff for the cycles that follow,
+  /// until the next call or the next rebuild; an empty `extra` takes it off. The aggregates and
+  /// prolongators stay (they are A_ff's); each level's operator is made again through them
+  /// (A_c = R (A + D) P) with its Jacobi scale, and the coarsest factor. For stiffness that
+  /// changes from step to step (friction in the step, contact_planes.hpp). Call after prepare().
+  /// False if the coarsest factor fails.
+  bool set_extra_diagonal(const Eigen::VectorXd& extra);
+
   /// z ~ A_ff^-1 r on the free particles by one V-cycle (r, z: 3#P; z's pinned entries set to 0,
   /// r's ignored). Prepares first if needed; false if that fails (z unchanged).
   bool apply(const SpringModel& model, const PdSystem& system, const Eigen::VectorXd& r,
@@ -55,7 +65,9 @@ class PdMultigrid {
 
  private:
   void cycle(int level);
+  bool factor_coarsest();
   std::uint64_t m_generation = 0;
+  bool m_extra = false;  ///< an extra diagonal is on the levels' operators
   std::vector<PdMultigridLevel> m_levels;
   std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> m_coarsest;
 };

@@ -181,8 +181,9 @@ TEST_P(Minimisers, StaticFrictionHoldsAParticleOnASlopeAtOneStepPerFrame) {
     params.friction_in_step = in_step;
     // Held, the particle's normal momentum does not change: the penalty's impulses and the
     // projection's (beta times smaller) add up to gravity's normal impulse, step by step to the
-    // solver's tolerance (quasi-Newton's, on friction's steep start in the step, 10 %), over the
-    // 3 s to 2 %.
+    // solver's tolerance, over the 3 s to 2 %; with friction in the step to 5 %: quasi-Newton's
+    // V-cycle then carries friction's stiffness in all three directions, and its steps stop up to
+    // its tolerance short of the penalty's depth (the projection gives the rest).
     StepWorkspace workspace;
     double penalty_impulses_m_per_s = 0.0;
     for (int n = 0; n < 90; ++n) {
@@ -192,7 +193,7 @@ TEST_P(Minimisers, StaticFrictionHoldsAParticleOnASlopeAtOneStepPerFrame) {
     EXPECT_LT((state.x - start).norm(), 1e-12) << "held for 3 s; in step " << in_step;
     const double normal_impulse_m_per_s = g * std::cos(20.0 * M_PI / 180.0) * h;
     EXPECT_NEAR(penalty_impulses_m_per_s / 90.0, normal_impulse_m_per_s * penalty / (1.0 + penalty),
-                0.02 * normal_impulse_m_per_s)
+                (in_step ? 0.05 : 0.02) * normal_impulse_m_per_s)
         << "in step " << in_step;
   }
 }

@@ -87,6 +87,60 @@ TEST(PdMultigrid, EachCycleDividesTheErrorByAboutThreeAtAnySize) {
   }
 }
 
+TEST(PdMultigrid, AnExtraDiagonalIsCycledThroughTheSameAggregatesAndTakenOffAgain) {
+  // friction's stiffness in the step on half of the sheet, up to 1000 times m/h^2: the cycle
+  // approximates (A_ff + D)^-1 as well as A_ff^-1; taken off, the cycle is A_ff's again, bit for
+  // bit
+  State state;
+  const SpringModel model = test::stiff_sheet(41, state);
+  PdSystem system;
+  update_pd_system(model, time_step_s, system);
+  PdMultigrid multigrid;
+  ASSERT_TRUE(multigrid.prepare(model, system));
+  const Eigen::VectorXd b = test::random_free_vector(model, 4);
+  Eigen::VectorXd before;
+  multigrid.apply(model, system, b, before);
+
+  const int free_count = static_cast<int>(system.free_particles.size());
+  Eigen::VectorXd extra = Eigen::VectorXd::Zero(free_count);
+  for (int f = 0; f < free_count; f += 2) {
+    const int p = system.free_particles[f];
+    extra[f] = (1.0 + 999.0 * (f % 7) / 6.0) * model.mass[p] / (time_step_s * time_step_s);
+  }
+  ASSERT_TRUE(multigrid.set_extra_diagonal(extra));
+  const auto product = [&](const Eigen::VectorXd& x) {  // (A_ff + D) x
+    Eigen::VectorXd y = pd_product(system, x);
+    for (int f = 0; f < free_count; ++f) {
+      y.segment<3>(3 * system.free_particles[f]) +=
+          extra[f] * x.segment<3>(3 * system.free_particles[f]);
+    }
+    return y;
+  };
+  Eigen::SparseMatrix<double> a = pd_free_particle_matrix(system);
+  for (int f = 0; f < free_count; ++f) a.coeffRef(f, f) += extra[f];
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> exact_solver(a);
+  ASSERT_EQ(exact_solver.info(), Eigen::Success);
+  Eigen::VectorXd exact = Eigen::VectorXd::Zero(b.size());
+  for (int c = 0; c < 3; ++c) {
+    Eigen::VectorXd rhs(free_count);
+    for (int f = 0; f < free_count; ++f) rhs[f] = b[3 * system.free_particles[f] + c];
+    const Eigen::VectorXd solution = exact_solver.solve(rhs);
+    for (int f = 0; f < free_count; ++f) exact[3 * system.free_particles[f] + c] = solution[f];
+  }
+  const auto energy_norm = [&](const Eigen::VectorXd& e) { return std::sqrt(e.dot(product(e))); };
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size()), z;
+  for (int k = 0; k < 10; ++k) {
+    multigrid.apply(model, system, b - product(x), z);
+    x += z;
+  }
+  EXPECT_LT(std::pow(energy_norm(x - exact) / energy_norm(exact), 0.1), 0.4);
+
+  ASSERT_TRUE(multigrid.set_extra_diagonal(Eigen::VectorXd()));
+  Eigen::VectorXd after;
+  multigrid.apply(model, system, b, after);
+  EXPECT_EQ(after, before);
+}
+
 TEST(PdMultigrid, AggregatesAlongBendingSpringsWhenAParticleHasNoOther) {
   // every spring a bending spring: the aggregates grow on them, and the cycle still converges
   State state;
