@@ -226,6 +226,13 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
   s.solver.obstacle_penalty =
       simulation.number_or("obstacle_penalty", s.solver.obstacle_penalty, non_negative(""));
   s.solver.friction_in_step = simulation.boolean_or("friction_in_step", s.solver.friction_in_step);
+  const bool minimiser =
+      s.solver.integrator == Integrator::newton || s.solver.integrator == Integrator::quasi_newton;
+  if (s.solver.friction_in_step && !(minimiser && s.solver.obstacle_penalty > 0.0)) {
+    s.notes.push_back(simulation.file() + ": " + simulation.key_path("friction_in_step") +
+                      ": acts only with simulation.obstacle_penalty > 0 and the newton or "
+                      "quasi_newton integrator; here friction acts after each step only");
+  }
   s.solver.strain_limit = simulation.number_or("strain_limit", s.solver.strain_limit,
                                                between(0.0, 10.0, " (0: none; 0.1: 10 %)"));
   s.threads = simulation.integer_or("threads", 0, 0, 1024);

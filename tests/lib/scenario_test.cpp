@@ -395,6 +395,23 @@ TEST(Scenario, NotesAMultigridInitialHessianAtALooseTolerance) {
                   .notes.empty());
 }
 
+TEST(Scenario, NotesFrictionInTheStepWhereItCannotAct) {
+  const Scenario alone =
+      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.friction_in_step=true"});
+  ASSERT_EQ(alone.notes.size(), 1u);
+  EXPECT_THAT(alone.notes[0], HasSubstr("dir/s.json: simulation.friction_in_step: acts only with "
+                                        "simulation.obstacle_penalty > 0"));
+  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
+                           {"simulation.friction_in_step=true", "simulation.obstacle_penalty=100",
+                            "simulation.integrator=implicit_euler"})
+                .notes.size(),
+            1u);
+  EXPECT_TRUE(
+      parse_scenario(test::minimal_scenario, "dir/s.json",
+                     {"simulation.friction_in_step=true", "simulation.obstacle_penalty=100"})
+          .notes.empty());
+}
+
 TEST(Scenario, ReadsTheStrainLimit) {
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json").solver.strain_limit, 0.0);
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {"simulation.strain_limit=0.1"})
