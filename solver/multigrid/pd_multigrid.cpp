@@ -106,6 +106,12 @@ AggregationGraph nearest_neighbour_graph(const SpringModel& model, const PdSyste
   return graph;
 }
 
+// The damped Jacobi sweep's omega / A_ii, with omega rho(D^-1 A) <= 2 smoother_damping < 2 by
+// Gershgorin's bound `radius_bound` of rho(D^-1 A): the sweep converges, the cycle is definite.
+Eigen::VectorXd jacobi_scale(const Eigen::VectorXd& diagonal, double radius_bound) {
+  return (smoother_damping * 2.0 / std::max(radius_bound, 2.0)) * diagonal.cwiseInverse();
+}
+
 // Aggregates a and b are neighbours when some of their nodes are.
 AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<int>& aggregate,
                                 int aggregates) {
@@ -139,10 +145,7 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     const int nodes = static_cast<int>(a.rows());
     const Eigen::VectorXd diagonal = a.diagonal();
     const double radius_bound = jacobi_radius_bound(a, diagonal);
-    // omega rho(D^-1 A) <= 2 smoother_damping < 2: the sweep converges, the cycle is definite
-    // (and stays so with an extra diagonal, which only lowers Gershgorin's bound)
-    fine.jacobi_damping = smoother_damping * 2.0 / std::max(radius_bound, 2.0);
-    fine.jacobi_scale = fine.jacobi_damping * diagonal.cwiseInverse();
+    fine.jacobi_scale = jacobi_scale(diagonal, radius_bound);
     fine.base_matrix = a;
     fine.solution.setZero(3, nodes);
     fine.residual.setZero(3, nodes);
@@ -203,7 +206,8 @@ bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
       added = RowMatrix(fine.restrictor * RowMatrix(added * fine.prolongator));
       level.matrix = level.base_matrix + added;
     }
-    level.jacobi_scale = level.jacobi_damping * level.matrix.diagonal().cwiseInverse();
+    const Eigen::VectorXd diagonal = level.matrix.diagonal();
+    level.jacobi_scale = jacobi_scale(diagonal, jacobi_radius_bound(level.matrix, diagonal));
   }
   return factor_coarsest();
 }

@@ -28,7 +28,6 @@ namespace tissu {
 struct PdMultigridLevel {
   Eigen::SparseMatrix<double, Eigen::RowMajor> matrix;       ///< n x n (kg/s^2), with the extra
   Eigen::SparseMatrix<double, Eigen::RowMajor> base_matrix;  ///< n x n, without (kg/s^2)
-  double jacobi_damping = 0.0;                               ///< omega of the sweeps
   Eigen::VectorXd jacobi_scale;                              ///< n: omega / A_ii (s^2/kg)
   Eigen::SparseMatrix<double, Eigen::RowMajor> prolongator;  ///< n x n_c, smoothed
   Eigen::SparseMatrix<double, Eigen::RowMajor> restrictor;   ///< n_c x n, its transpose
@@ -50,9 +49,9 @@ class PdMultigrid {
   /// Adds diag(extra) (#F, kg/s^2, >= 0, by free particle) to A_ff for the cycles that follow,
   /// until the next call or the next rebuild; an empty `extra` takes it off. The aggregates and
   /// prolongators stay (they are A_ff's); each level's operator is made again through them
-  /// (A_c = R (A + D) P) with its Jacobi scale, and the coarsest factor. For stiffness that
-  /// changes from step to step (friction in the step, contact_planes.hpp). Call after prepare().
-  /// False if the coarsest factor fails.
+  /// (A_c = R (A + D) P) with its Jacobi scale (from its own Gershgorin bound), and the coarsest
+  /// factor. For stiffness that changes from step to step (friction in the step,
+  /// contact_planes.hpp). Call after prepare(). False if the coarsest factor fails.
   bool set_extra_diagonal(const Eigen::VectorXd& extra);
 
   /// z ~ A_ff^-1 r on the free particles by one V-cycle (r, z: 3#P; z's pinned entries set to 0,
