@@ -157,17 +157,22 @@ StepStatus step(const SpringModel& model, const SolverParams& params, State& sta
     if (held != nullptr && !held->empty()) {  // reuses the buffers: no allocation per step
       contact_normal_impulses(model, *held, static_cast<int>(params.obstacles.size()),
                               params.time_step, state.x, workspace.obstacle_penalty_impulse);
-      workspace.obstacle_impulse_after_step = workspace.obstacle_penalty_impulse;
-      remove_friction_given_in_step(*held, state.x, workspace.obstacle_impulse_after_step);
+      if (params.friction_in_step) {
+        workspace.obstacle_impulse_after_step = workspace.obstacle_penalty_impulse;
+        remove_friction_given_in_step(*held, state.x, workspace.obstacle_impulse_after_step);
+      }
     } else {
       workspace.obstacle_penalty_impulse.resize(0, 0);
       workspace.obstacle_impulse_after_step.resize(0, 0);
     }
     workspace.obstacle_penalty_impulse_model = model.identity;  // the next step's lagged friction
+    // without friction in the step, friction after it has the whole penalty impulse: no copy
+    const Eigen::MatrixXd& impulse_after_step = params.friction_in_step
+                                                    ? workspace.obstacle_impulse_after_step
+                                                    : workspace.obstacle_penalty_impulse;
     workspace.obstacle_contacts = resolve_obstacle_contacts(
         model, params.obstacles, params.time_step, end_time_s, workspace.step_start_x, state,
-        workspace.obstacle_holding_normal, workspace.obstacle_impulse_after_step,
-        &workspace.obstacle_distances);
+        workspace.obstacle_holding_normal, impulse_after_step, &workspace.obstacle_distances);
     const bool both = params.self_collision.enabled && !params.obstacles.empty();
     if (both) workspace.before_self_collision_x = state.x;
     workspace.self_collision = resolve_self_collisions(

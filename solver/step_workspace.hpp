@@ -33,7 +33,8 @@ struct StepWorkspace {
   /// friction lags its normal force from it (contact_planes.hpp)
   Eigen::MatrixXd obstacle_penalty_impulse;
   std::uint64_t obstacle_penalty_impulse_model = 0;
-  /// the same without the planes that had friction in the step: what friction after it may use
+  /// with SolverParams::friction_in_step, the same without the planes that slid with friction in
+  /// the step: what friction after it may use
   Eigen::MatrixXd obstacle_impulse_after_step;
   /// 3 x #P outward normal of the obstacle that held each particle in the last step, 0 if none
   Eigen::Matrix3Xd obstacle_holding_normal;
