@@ -153,6 +153,12 @@ struct NewtonOptions {
   double tolerance = 1e-2;
   int max_iterations = 20;      ///< a step that has not met the tolerance by then is not_converged
   int cg_max_iterations = 200;  ///< conjugate gradient iterations per Newton iteration, at most
+  /// the step also has to bring its gradient's norm down to this fraction of its first (as
+  /// QuasiNewtonOptions::gradient_reduction), in [0, 1]; 0: the correction test alone. A small
+  /// correction is not a small gradient where the Hessian is locally much stiffer than the step:
+  /// a particle starting to slide under friction in the step (its stiffness 2F/e at rest) creeps
+  /// by a fraction of e, and the correction test alone held it fast
+  double gradient_reduction = 0.1;
   /// multigrid: 1.8 to 2.9 times faster than pd_matrix on the stiff hanging sheet from 41 x 41 to
   /// 256 x 256 particles, as close to the converged motion (docs/benchmarks.md, "Newton
   /// preconditioned by multigrid")
@@ -174,7 +180,8 @@ struct SolverParams {
   /// it); 0: obstacles act only after the step, as for the other integrators
   double obstacle_penalty = 0.0;
   /// with obstacle_penalty: Coulomb friction inside the step too, its normal force lagged from the
-  /// last step (contact_planes.hpp; Li et al. 2020), so that friction cannot hold a particle its
+  /// last step, or estimated at the step's start where there is none, as after a remesh
+  /// (lag_contact_friction(); Li et al. 2020), so that friction cannot hold a particle its
   /// springs pull harder than mu times its normal force (after the step alone, on velocity, it
   /// holds stretched springs of a stiff cloth lying on a floor); 0.9 to 1.4 times the time of the
   /// garment and drape demos (docs/benchmarks.md). false: friction after the step only

@@ -149,6 +149,8 @@ NewtonOptions read_newton(JsonObjectReader newton) {
   o.tolerance = newton.number_or("tolerance", o.tolerance, {0.0, 1.0, true, "a number in (0, 1]"});
   o.max_iterations = newton.integer_or("max_iterations", o.max_iterations, 1, 100000);
   o.cg_max_iterations = newton.integer_or("cg_max_iterations", o.cg_max_iterations, 1, 1000000);
+  o.gradient_reduction =
+      newton.number_or("gradient_reduction", o.gradient_reduction, between(0.0, 1.0, ""));
   o.preconditioner = read_named(newton, "preconditioner", o.preconditioner,
                                 {NewtonPreconditioner::multigrid, NewtonPreconditioner::pd_matrix});
   newton.finish();

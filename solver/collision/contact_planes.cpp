@@ -66,18 +66,26 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
 }
 
 void lag_contact_friction(const SpringModel& model, const std::vector<Obstacle>& obstacles,
-                          const Eigen::MatrixXd* lagged_impulse, double time_step_s,
+                          const Eigen::MatrixXd* lagged_impulse,
+                          const Eigen::VectorXd& first_iterate,
+                          const Eigen::VectorXd& gradient_without_contacts, double time_step_s,
                           std::vector<ContactPlane>& planes) {
   const bool lagged = lagged_impulse != nullptr &&
                       lagged_impulse->rows() == static_cast<Eigen::Index>(obstacles.size()) &&
                       lagged_impulse->cols() == model.particle_count();
+  const double inverse_h2 = 1.0 / (time_step_s * time_step_s);
   for (ContactPlane& plane : planes) {
     plane.slip_scale_m = friction_slip_speed_m_per_s * time_step_s;
-    if (!lagged) continue;
-    const double normal_force_n =  // lambda = m J / h
-        model.mass[plane.particle] * (*lagged_impulse)(plane.obstacle, plane.particle) /
-        time_step_s;
-    plane.friction_n = obstacles[plane.obstacle].kinetic_friction * normal_force_n;
+    const int p = plane.particle;
+    double normal_force_n = 0.0;
+    if (lagged) {  // lambda = m J / h
+      normal_force_n = model.mass[p] * (*lagged_impulse)(plane.obstacle, p) / time_step_s;
+    } else {  // lambda = (m / h^2) depth(x_0 - (h^2 / m) g) = (m / h^2) (point - x_0) . n + g . n
+      const double depth_m = (plane.point - first_iterate.segment<3>(3 * p)).dot(plane.normal);
+      normal_force_n = model.mass[p] * inverse_h2 * depth_m +
+                       gradient_without_contacts.segment<3>(3 * p).dot(plane.normal);
+    }
+    plane.friction_n = obstacles[plane.obstacle].kinetic_friction * std::max(0.0, normal_force_n);
   }
 }
 

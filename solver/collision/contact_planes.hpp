@@ -5,7 +5,7 @@
 /// one-sided quadratic penalty added to backward Euler's incremental potential (the penalty
 /// contacts of Baraff & Witkin 1998 and Martin et al. 2011 taken into the potential, as IPC, Li et
 /// al. 2020, takes its barrier), and by Coulomb friction in the potential too, its normal force
-/// lagged from the last step (IPC's lagged friction, Li et al. 2020, section 5). The contact
+/// lagged (IPC's lagged friction, Li et al. 2020, section 5). The contact
 /// projection after the step (obstacle_contacts.hpp) stays, and applies Coulomb friction with the
 /// normal impulse the penalty gave where no friction acted in the step. CGAL-free.
 
@@ -60,12 +60,24 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
                          std::vector<ContactPlane>& planes,
                          ObstacleDistanceCache* distances = nullptr);
 
-/// Gives each plane its friction bound from the last step's normal impulses per unit mass
-/// `lagged_impulse` (#obstacles x #P, m/s, contact_normal_impulses() of that step, on the same
-/// model; nullptr: none, as after a remesh): lambda = m J / h, F = mu_k lambda (the obstacle's
-/// kinetic_friction), and its slip scale e.
+/// Gives each plane its friction bound F = mu_k lambda (the obstacle's kinetic_friction) and its
+/// slip scale e, lambda the normal force (N) lagged as IPC's friction lags it (Li et al. 2020,
+/// section 5):
+/// - from the last step's normal impulses per unit mass `lagged_impulse` (#obstacles x #P, m/s,
+///   contact_normal_impulses() of that step, on the same model): lambda = m J / h, the contact
+///   force the last converged step found;
+/// - without them (nullptr: the first step, or a remesh or a tear renumbered the particles),
+///   estimated at the step's first iterate x_0 (3#P, m) from the potential's gradient there
+///   without the contacts (3#P, N): one gradient step of the particle alone takes it to
+///   x_0 - (h^2 / m) g, and lambda = (m / h^2) times that point's depth below the plane, or 0. A
+///   particle resting on a floor gets its weight plus what its springs press down, one its springs
+///   lift off none. Not used when the lag is there: the springs' forces at x_0 = x_n + h v_n are
+///   those of an extrapolated shape, and on a garment that legs push and pull (skirt_walk) they
+///   made lambda many times the contact's force (docs/benchmarks.md).
 void lag_contact_friction(const SpringModel& model, const std::vector<Obstacle>& obstacles,
-                          const Eigen::MatrixXd* lagged_impulse, double time_step_s,
+                          const Eigen::MatrixXd* lagged_impulse,
+                          const Eigen::VectorXd& first_iterate,
+                          const Eigen::VectorXd& gradient_without_contacts, double time_step_s,
                           std::vector<ContactPlane>& planes);
 
 /// A plane whose particle slipped more than this many slip scales e over the step slid, its

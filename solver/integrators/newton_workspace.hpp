@@ -34,6 +34,7 @@ struct NewtonWorkspace {
   int iterations = 0;              ///< Newton iterations of the last step
   int cg_iterations = 0;           ///< conjugate gradient iterations of the last step, in all
   double correction_ratio = 0.0;   ///< the last relative_correction() (dimensionless)
+  double gradient_ratio = 0.0;     ///< the last gradient over what gradient_reduction scales
 };
 
 }  // namespace tissu

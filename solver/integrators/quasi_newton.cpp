@@ -164,6 +164,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   if (!converged && options.newton_fallback) {
     NewtonOptions newton = params.newton;
     newton.tolerance = options.tolerance;
+    newton.gradient_reduction = options.gradient_reduction;
     newton.preconditioner = NewtonPreconditioner::multigrid;  // needs no factor
     converged =
         newton_iterations(model, newton, potential, state.x, energy_j, qn.common, workspace.newton);

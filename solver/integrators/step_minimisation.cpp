@@ -37,13 +37,18 @@ bool start_step_minimisation(const SpringModel& model, const SolverParams& param
   }
   find_contact_planes(model, params.obstacles, params.obstacle_penalty, h, state.time + h, state.x,
                       workspace.x, workspace.contacts, obstacle_distances);
-  if (params.friction_in_step) {
-    lag_contact_friction(model, params.obstacles, lagged_normal_impulse, h, workspace.contacts);
-  }
-  if (!workspace.contacts.empty()) potential.contacts = &workspace.contacts;
   prepare_step_potential(model, potential, workspace.potential);
+  // E(x_0) without the contacts, whose friction is estimated from that gradient, then with them
   energy_j = evaluate_step_potential(model, potential, workspace.x, workspace.potential,
                                      &workspace.gradient);
+  if (!workspace.contacts.empty()) {
+    if (params.friction_in_step) {
+      lag_contact_friction(model, params.obstacles, lagged_normal_impulse, workspace.x,
+                           workspace.gradient, h, workspace.contacts);
+    }
+    potential.contacts = &workspace.contacts;
+    energy_j += add_contact_potential(workspace.contacts, workspace.x, &workspace.gradient);
+  }
   return std::isfinite(energy_j) && workspace.gradient.allFinite();
 }
 

@@ -18,11 +18,10 @@ namespace tissu {
 /// factorisation (a Newton step preconditioned by multigrid needs neither), the potential's start
 /// directions and obstacle contacts (with SolverParams::obstacle_penalty; `obstacle_distances`, if
 /// given and prepared for this step, skips the mesh queries it can answer; with
-/// SolverParams::friction_in_step their friction from `lagged_normal_impulse`,
-/// lag_contact_friction()), and E(x_0) with its
-/// gradient. Fills `potential` (which points into `workspace` and
-/// `state`). False when something is not finite (or the PD matrix cannot be factorised): the step
-/// is then non_finite.
+/// SolverParams::friction_in_step their friction from `lagged_normal_impulse`, or estimated
+/// without it, lag_contact_friction()), and E(x_0) with its gradient. Fills `potential` (which
+/// points into `workspace` and `state`). False when something is not finite (or the PD matrix
+/// cannot be factorised): the step is then non_finite.
 bool start_step_minimisation(const SpringModel& model, const SolverParams& params,
                              const State& state, MinimisationWorkspace& workspace,
                              ObstacleDistanceCache* obstacle_distances,

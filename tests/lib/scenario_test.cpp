@@ -141,7 +141,7 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
       test::minimal_scenario, "dir/s.json",
       {"simulation.integrator=newton",
        R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
-           "preconditioner": "pd_matrix"})",
+           "preconditioner": "pd_matrix", "gradient_reduction": 0.3})",
        R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
            "initial_hessian": "pd_matrix", "gradient_reduction": 0.2,
            "newton_fallback": false})",
@@ -159,6 +159,11 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   EXPECT_EQ(s.solver.newton.max_iterations, 7);
   EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);
   EXPECT_EQ(s.solver.newton.preconditioner, NewtonPreconditioner::pd_matrix);
+  EXPECT_DOUBLE_EQ(s.solver.newton.gradient_reduction, 0.3);
+  EXPECT_DOUBLE_EQ(
+      parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.gradient_reduction, 0.1);
+  EXPECT_THAT(with("simulation.newton.gradient_reduction", "-0.1"),
+              HasSubstr("simulation.newton.gradient_reduction: expected"));
   EXPECT_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.preconditioner,
             NewtonPreconditioner::multigrid);
   EXPECT_THAT(with("simulation.newton.preconditioner", R"("jacobi")"),
