@@ -227,10 +227,12 @@ void read_simulation(JsonObjectReader simulation, Scenario& s) {
       simulation.integer_or("cg_max_iterations", s.solver.implicit.cg_max_iterations, 1, 1'000'000);
   s.solver.obstacle_penalty =
       simulation.number_or("obstacle_penalty", s.solver.obstacle_penalty, non_negative(""));
+  const bool friction_in_step_set = simulation.has("friction_in_step");
   s.solver.friction_in_step = simulation.boolean_or("friction_in_step", s.solver.friction_in_step);
   const bool minimiser =
       s.solver.integrator == Integrator::newton || s.solver.integrator == Integrator::quasi_newton;
-  if (s.solver.friction_in_step && !(minimiser && s.solver.obstacle_penalty > 0.0)) {
+  if (friction_in_step_set && s.solver.friction_in_step &&
+      !(minimiser && s.solver.obstacle_penalty > 0.0)) {
     s.notes.push_back(simulation.file() + ": " + simulation.key_path("friction_in_step") +
                       ": acts only with simulation.obstacle_penalty > 0 and the newton or "
                       "quasi_newton integrator; here friction acts after each step only");

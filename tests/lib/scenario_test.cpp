@@ -146,11 +146,11 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
            "initial_hessian": "pd_matrix", "gradient_reduction": 0.2,
            "newton_fallback": false})",
        "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100",
-       "simulation.friction_in_step=true"});
+       "simulation.friction_in_step=false"});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
-  EXPECT_TRUE(s.solver.friction_in_step);
-  EXPECT_FALSE(parse_scenario(test::minimal_scenario, "s.json", {}).solver.friction_in_step);
+  EXPECT_FALSE(s.solver.friction_in_step);
+  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "s.json", {}).solver.friction_in_step);
   EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.obstacle_penalty,
                    0.0);
   EXPECT_EQ(with("simulation.obstacle_penalty", "-1"),
@@ -415,6 +415,8 @@ TEST(Scenario, NotesFrictionInTheStepWhereItCannotAct) {
       parse_scenario(test::minimal_scenario, "dir/s.json",
                      {"simulation.friction_in_step=true", "simulation.obstacle_penalty=100"})
           .notes.empty());
+  // on by default: no note where the scenario does not ask for it
+  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json", {}).notes.empty());
 }
 
 TEST(Scenario, ReadsTheStrainLimit) {
