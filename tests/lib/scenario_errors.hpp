@@ -33,4 +33,10 @@ inline std::string scenario_error_of(const std::string& text,
   return "no error";
 }
 
+/// The ScenarioError message of the minimal scenario with `key` set to `value` (JSON text), or
+/// "no error".
+inline std::string minimal_scenario_error(const std::string& key, const std::string& value) {
+  return scenario_error_of(minimal_scenario, {key + "=" + value});
+}
+
 }  // namespace tissu::test

@@ -17,9 +17,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::string with(const std::string& key, const std::string& value) {
-  return test::scenario_error_of(test::minimal_scenario, {key + "=" + value});
-}
+using test::minimal_scenario_error;
 
 TEST(Scenario, MinimalScenarioGetsDocumentedDefaults) {
   const Scenario s = parse_scenario(test::minimal_scenario, "dir/s.json");
@@ -81,125 +79,6 @@ TEST(Scenario, ReadsEverySection) {
   EXPECT_EQ(s.output.mesh_format, MeshFormat::ply);
 }
 
-TEST(Scenario, ReadsProjectiveDynamicsOptions) {
-  const Scenario s = parse_scenario(
-      test::minimal_scenario, "dir/s.json",
-      {"simulation.integrator=projective_dynamics",
-       R"(simulation.pd={"global_solver": "colored_gauss_seidel", "iterations": 20, "tolerance": 1e-4})"});
-  EXPECT_EQ(s.solver.integrator, Integrator::projective_dynamics);
-  EXPECT_EQ(s.solver.pd.global_solver, PdGlobalSolver::colored_gauss_seidel);
-  EXPECT_EQ(s.solver.pd.iterations, 20);
-  EXPECT_DOUBLE_EQ(s.solver.pd.tolerance, 1e-4);
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
-                           {"simulation.pd.global_solver=chebyshev"})
-                .solver.pd.global_solver,
-            PdGlobalSolver::chebyshev);
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
-                           {"simulation.pd.global_solver=block_gauss_seidel"})
-                .solver.pd.global_solver,
-            PdGlobalSolver::block_gauss_seidel);
-  EXPECT_THAT(test::scenario_error_of(test::minimal_scenario, {"simulation.pd.global_solver=sor"}),
-              HasSubstr("simulation.pd.global_solver: expected one of \"direct\", \"jacobi\""));
-}
-
-TEST(Scenario, ReadsTheChebyshevOptions) {
-  const ProjectiveDynamicsOptions defaults;
-  const Scenario plain = parse_scenario(test::minimal_scenario, "dir/s.json");
-  EXPECT_DOUBLE_EQ(plain.solver.pd.chebyshev_relaxation, defaults.chebyshev_relaxation);
-  EXPECT_EQ(plain.solver.pd.chebyshev_delay, defaults.chebyshev_delay);
-  const Scenario s = parse_scenario(
-      test::minimal_scenario, "dir/s.json",
-      {R"(simulation.pd={"global_solver": "chebyshev", "chebyshev_spectral_radius": 0.9,
-                         "chebyshev_relaxation": 0.8, "chebyshev_delay": 5})"});
-  EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_spectral_radius, 0.9);
-  EXPECT_DOUBLE_EQ(s.solver.pd.chebyshev_relaxation, 0.8);
-  EXPECT_EQ(s.solver.pd.chebyshev_delay, 5);
-  EXPECT_DOUBLE_EQ(
-      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.pd.chebyshev_relaxation=1"})
-          .solver.pd.chebyshev_relaxation,
-      1.0);
-}
-
-TEST(Scenario, ChebyshevOptionsOutOfRangeAreNamed) {
-  EXPECT_EQ(with("simulation.pd.chebyshev_relaxation", "0"),
-            "dir/s.json: simulation.pd.chebyshev_relaxation: expected a number in (0, 1], got 0");
-  EXPECT_THAT(with("simulation.pd.chebyshev_relaxation", "1.5"),
-              HasSubstr("simulation.pd.chebyshev_relaxation: expected a number in (0, 1]"));
-  EXPECT_THAT(with("simulation.pd.chebyshev_relaxation", "\"high\""),
-              HasSubstr("simulation.pd.chebyshev_relaxation: expected a number in (0, 1]"));
-  EXPECT_EQ(with("simulation.pd.chebyshev_delay", "-1"),
-            "dir/s.json: simulation.pd.chebyshev_delay: expected an integer from 0 to 100000, "
-            "got -1");
-  EXPECT_THAT(with("simulation.pd.chebyshev_delay", "2.5"),
-              HasSubstr("simulation.pd.chebyshev_delay: expected an integer from 0 to 100000"));
-  EXPECT_THAT(with("simulation.pd.chebyshev_delay", "100001"),
-              HasSubstr("simulation.pd.chebyshev_delay: expected an integer from 0 to 100000"));
-}
-
-TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
-  const Scenario s = parse_scenario(
-      test::minimal_scenario, "dir/s.json",
-      {"simulation.integrator=newton",
-       R"(simulation.newton={"tolerance": 0.01, "max_iterations": 7, "cg_max_iterations": 50,
-           "preconditioner": "pd_matrix", "gradient_reduction": 0.3})",
-       R"(simulation.quasi_newton={"tolerance": 0.02, "max_iterations": 9, "history": 3,
-           "initial_hessian": "pd_matrix", "gradient_reduction": 0.2,
-           "newton_fallback": false})",
-       "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100",
-       "simulation.friction_in_step=false"});
-  EXPECT_EQ(s.solver.integrator, Integrator::newton);
-  EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
-  EXPECT_FALSE(s.solver.friction_in_step);
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "s.json", {}).solver.friction_in_step);
-  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.obstacle_penalty,
-                   0.0);
-  EXPECT_EQ(with("simulation.obstacle_penalty", "-1"),
-            "dir/s.json: simulation.obstacle_penalty: expected a number >= 0, got -1");
-  EXPECT_DOUBLE_EQ(s.solver.newton.tolerance, 0.01);
-  EXPECT_EQ(s.solver.newton.max_iterations, 7);
-  EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);
-  EXPECT_EQ(s.solver.newton.preconditioner, NewtonPreconditioner::pd_matrix);
-  EXPECT_DOUBLE_EQ(s.solver.newton.gradient_reduction, 0.3);
-  EXPECT_DOUBLE_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.gradient_reduction, 0.1);
-  EXPECT_THAT(with("simulation.newton.gradient_reduction", "-0.1"),
-              HasSubstr("simulation.newton.gradient_reduction: expected"));
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.preconditioner,
-            NewtonPreconditioner::multigrid);
-  EXPECT_THAT(with("simulation.newton.preconditioner", R"("jacobi")"),
-              HasSubstr("simulation.newton.preconditioner: expected one of"));
-  EXPECT_DOUBLE_EQ(s.solver.quasi_newton.tolerance, 0.02);
-  EXPECT_EQ(s.solver.quasi_newton.max_iterations, 9);
-  EXPECT_EQ(s.solver.quasi_newton.history, 3);
-  EXPECT_EQ(s.solver.quasi_newton.initial_hessian, QuasiNewtonInitialHessian::pd_matrix);
-  EXPECT_DOUBLE_EQ(s.solver.quasi_newton.gradient_reduction, 0.2);
-  EXPECT_DOUBLE_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.gradient_reduction,
-      0.1);
-  EXPECT_THAT(with("simulation.quasi_newton.gradient_reduction", "1.5"),
-              HasSubstr("simulation.quasi_newton.gradient_reduction: expected"));
-  EXPECT_FALSE(s.solver.quasi_newton.newton_fallback);
-  EXPECT_TRUE(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.newton_fallback);
-  EXPECT_THAT(with("simulation.quasi_newton.newton_fallback", "1"),
-              HasSubstr("simulation.quasi_newton.newton_fallback: expected"));
-  EXPECT_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.initial_hessian,
-      QuasiNewtonInitialHessian::pd_multigrid);
-  EXPECT_THAT(with("simulation.quasi_newton.initial_hessian", R"("multigrid")"),
-              HasSubstr("simulation.quasi_newton.initial_hessian: expected one of"));
-  EXPECT_DOUBLE_EQ(s.solver.pd.max_estimated_error, 0.0);
-  EXPECT_EQ(with("simulation.newton.tolerance", "0"),
-            "dir/s.json: simulation.newton.tolerance: expected a number in (0, 1], got 0");
-  EXPECT_THAT(with("simulation.quasi_newton.history", "-1"),
-              HasSubstr("simulation.quasi_newton.history: expected an integer from 0 to 1000"));
-  EXPECT_THAT(with("simulation.newton.max_iteration", "3"),
-              HasSubstr("simulation.newton.max_iteration: unknown key; did you mean "
-                        "'max_iterations'?"));
-  EXPECT_THAT(with("simulation.pd.max_estimated_error", "-1"),
-              HasSubstr("simulation.pd.max_estimated_error: expected a number >= 0"));
-}
-
 TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
   std::string text = test::minimal_scenario;
   text.replace(text.find("\"density\""), 9, "\"densty\"");
@@ -208,39 +87,41 @@ TEST(Scenario, MisspeltKeyIsNamedWithASuggestion) {
 }
 
 TEST(Scenario, UnknownKeyFarFromAnyIsListedWithTheKnownOnes) {
-  EXPECT_THAT(with("simulation.zzzzzzzzzz", "1"),
+  EXPECT_THAT(minimal_scenario_error("simulation.zzzzzzzzzz", "1"),
               HasSubstr("dir/s.json: simulation.zzzzzzzzzz: unknown key; known keys here:"));
 }
 
 TEST(Scenario, WrongTypesNameTheKeyAndWhatWasExpected) {
-  EXPECT_EQ(with("cloth.density", "\"heavy\""),
+  EXPECT_EQ(minimal_scenario_error("cloth.density", "\"heavy\""),
             "dir/s.json: cloth.density: expected a positive number (kg/m^2), got \"heavy\"");
-  EXPECT_EQ(with("simulation.frames", "2.5"),
+  EXPECT_EQ(minimal_scenario_error("simulation.frames", "2.5"),
             "dir/s.json: simulation.frames: expected an integer from 1 to 10000000, got 2.5");
-  EXPECT_EQ(with("cloth.grid.size", "[1]"),
+  EXPECT_EQ(minimal_scenario_error("cloth.grid.size", "[1]"),
             "dir/s.json: cloth.grid.size: expected an array of 2 numbers, each a number between "
             "1e-06 and 1e+06 (m), got [1]");
-  EXPECT_THAT(with("environment.gravity", "[0, 0]"),
+  EXPECT_THAT(minimal_scenario_error("environment.gravity", "[0, 0]"),
               HasSubstr("environment.gravity: expected an array of 3 finite numbers"));
-  EXPECT_THAT(with("output", "[]"), HasSubstr("dir/s.json: output: expected an object"));
-  EXPECT_THAT(with("output.meshes", "1"), HasSubstr("output.meshes: expected true or false"));
+  EXPECT_THAT(minimal_scenario_error("output", "[]"),
+              HasSubstr("dir/s.json: output: expected an object"));
+  EXPECT_THAT(minimal_scenario_error("output.meshes", "1"),
+              HasSubstr("output.meshes: expected true or false"));
 }
 
 TEST(Scenario, OutOfRangeValuesNameTheRange) {
-  EXPECT_EQ(with("cloth.density", "-1"),
+  EXPECT_EQ(minimal_scenario_error("cloth.density", "-1"),
             "dir/s.json: cloth.density: expected a positive number (kg/m^2), got -1");
-  EXPECT_THAT(with("cloth.springs.structural.damping", "-0.1"),
+  EXPECT_THAT(minimal_scenario_error("cloth.springs.structural.damping", "-0.1"),
               HasSubstr("expected a number >= 0 (N s/m), got -0.1"));
-  EXPECT_THAT(with("cloth.grid.resolution", "[0, 3]"),
+  EXPECT_THAT(minimal_scenario_error("cloth.grid.resolution", "[0, 3]"),
               HasSubstr("cloth.grid.resolution: expected a non-empty array of integers >= 1"));
   EXPECT_THAT(
-      with("simulation.integrator", "\"rk4\""),
+      minimal_scenario_error("simulation.integrator", "\"rk4\""),
       HasSubstr("simulation.integrator: expected one of \"symplectic_euler\", "
                 "\"position_verlet\", \"implicit_euler\", \"projective_dynamics\", \"newton\", "
                 "\"quasi_newton\", got \"rk4\""));
-  EXPECT_THAT(with("environment.wind.gust_amplitude", "11"),
+  EXPECT_THAT(minimal_scenario_error("environment.wind.gust_amplitude", "11"),
               HasSubstr("expected a number between 0 and 10"));
-  EXPECT_THAT(with("simulation.time_step", "0.007"),
+  EXPECT_THAT(minimal_scenario_error("simulation.time_step", "0.007"),
               HasSubstr("simulation.time_step: expected a time step that divides"));
 }
 
@@ -251,12 +132,13 @@ TEST(Scenario, MissingRequiredKeysAreNamed) {
             "dir/s.json: cloth.density: missing; expected a positive number (kg/m^2)");
   EXPECT_EQ(test::scenario_error_of(R"({"simulation": {"frames": 1}})"),
             "dir/s.json: cloth: missing; expected an object {...}");
-  EXPECT_THAT(with("cloth.springs.structural", "{\"enabled\": false, \"stiffness\": 1}"),
-              HasSubstr("cloth.springs.structural: expected structural springs"));
+  EXPECT_THAT(
+      minimal_scenario_error("cloth.springs.structural", "{\"enabled\": false, \"stiffness\": 1}"),
+      HasSubstr("cloth.springs.structural: expected structural springs"));
 }
 
 TEST(Scenario, ConflictingChoicesAreRejected) {
-  EXPECT_THAT(with("cloth.mesh", "{\"file\": \"a.obj\"}"),
+  EXPECT_THAT(minimal_scenario_error("cloth.mesh", "{\"file\": \"a.obj\"}"),
               HasSubstr("expected exactly one of \"grid\" and \"mesh\""));
   EXPECT_THAT(test::scenario_error_of(test::minimal_scenario,
                                       {"simulation.time_step=0.001", "simulation.substeps=3"}),
@@ -353,90 +235,10 @@ TEST(Scenario, ReadsSelfCollision) {
   EXPECT_DOUBLE_EQ(s.solver.self_collision.thickness_m, 0.003);
   EXPECT_DOUBLE_EQ(s.solver.self_collision.friction, 0.2);
   EXPECT_EQ(s.solver.self_collision.impulse_passes, 2);
-  EXPECT_THAT(with("self_collision", R"({ "thickness": 0 })"),
+  EXPECT_THAT(minimal_scenario_error("self_collision", R"({ "thickness": 0 })"),
               HasSubstr("self_collision.thickness: expected a positive number (m), got 0"));
-  EXPECT_THAT(with("self_collision", R"({ "thicknes": 0.01 })"),
+  EXPECT_THAT(minimal_scenario_error("self_collision", R"({ "thicknes": 0.01 })"),
               HasSubstr("did you mean 'thickness'?"));
-}
-
-TEST(Scenario, NotesImplicitEulerKeysThatTheDefaultIntegratorIgnores) {
-  // no integrator named: the default (quasi-Newton) runs, and implicit Euler's keys set nothing
-  const Scenario unnamed =
-      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.cg_tolerance=1e-8"});
-  EXPECT_EQ(unnamed.solver.integrator, Integrator::quasi_newton);
-  ASSERT_EQ(unnamed.notes.size(), 1u);
-  EXPECT_EQ(unnamed.notes[0],
-            "dir/s.json: simulation.cg_tolerance: read by \"implicit_euler\" only, and this "
-            "scenario names no simulation.integrator: it runs the default, \"quasi_newton\" "
-            "(before 2026-12-06 \"implicit_euler\"); name \"implicit_euler\" to use it");
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
-                           {"simulation.cg_tolerance=1e-8", "simulation.cg_max_iterations=50"})
-                .notes.size(),
-            2u);
-  // named, whichever it is: the scenario says what it wants
-  for (const char* integrator : {"implicit_euler", "newton"}) {
-    const Scenario named = parse_scenario(
-        test::minimal_scenario, "dir/s.json",
-        {"simulation.cg_tolerance=1e-8", std::string("simulation.integrator=") + integrator});
-    EXPECT_TRUE(named.notes.empty()) << integrator;
-  }
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json").notes.empty());
-}
-
-TEST(Scenario, NotesAMultigridInitialHessianAtALooseTolerance) {
-  // the defaults (the V-cycle with gradient_reduction 0.1) need no note; the correction test alone
-  // with the V-cycle does, unless the tolerance is tight
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json").notes.empty());
-  const std::string alone = "simulation.quasi_newton.gradient_reduction=0";
-  const Scenario loose = parse_scenario(test::minimal_scenario, "dir/s.json", {alone});
-  ASSERT_EQ(loose.notes.size(), 1u);
-  EXPECT_THAT(loose.notes[0], HasSubstr("dir/s.json: simulation.quasi_newton.initial_hessian: "
-                                        "\"pd_multigrid\" stops steps early"));
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json",
-                             {alone, "simulation.quasi_newton.tolerance=1e-3"})
-                  .notes.empty());
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json",
-                             {alone, R"(simulation.quasi_newton.initial_hessian="pd_matrix")"})
-                  .notes.empty());
-}
-
-TEST(Scenario, NotesFrictionInTheStepWhereItCannotAct) {
-  const Scenario alone =
-      parse_scenario(test::minimal_scenario, "dir/s.json", {"simulation.friction_in_step=true"});
-  ASSERT_EQ(alone.notes.size(), 1u);
-  EXPECT_THAT(alone.notes[0], HasSubstr("dir/s.json: simulation.friction_in_step: acts only with "
-                                        "simulation.obstacle_penalty > 0"));
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "dir/s.json",
-                           {"simulation.friction_in_step=true", "simulation.obstacle_penalty=100",
-                            "simulation.integrator=implicit_euler"})
-                .notes.size(),
-            1u);
-  EXPECT_TRUE(
-      parse_scenario(test::minimal_scenario, "dir/s.json",
-                     {"simulation.friction_in_step=true", "simulation.obstacle_penalty=100"})
-          .notes.empty());
-  // on by default: no note where the scenario does not ask for it
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "dir/s.json", {}).notes.empty());
-}
-
-TEST(Scenario, ReadsTheStrainLimit) {
-  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json").solver.strain_limit, 0.0);
-  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {"simulation.strain_limit=0.1"})
-                       .solver.strain_limit,
-                   0.1);
-  EXPECT_EQ(with("simulation.strain_limit", "-0.1"),
-            "dir/s.json: simulation.strain_limit: expected a number between 0 and 10 (0: none; "
-            "0.1: 10 %), got -0.1");
-  // tearing by strain would be held back by the limit; tearing along cuts is not
-  EXPECT_EQ(test::scenario_error_of(test::minimal_scenario,
-                                    {"simulation.strain_limit=0.1", R"(tearing={"strain": 0.3})"}),
-            "dir/s.json: simulation.strain_limit: expected 0 (none) when tearing by strain, which "
-            "the limit would hold back, got 0.1");
-  EXPECT_TRUE(
-      parse_scenario(test::minimal_scenario, "s.json",
-                     {"simulation.strain_limit=0.1",
-                      R"(tearing={"cuts": [{"time": 0.5, "line": [[0, 0, 0], [1, 0, 0]]}]})"})
-          .tearing.enabled);
 }
 
 TEST(Scenario, ReadsTearing) {
@@ -466,20 +268,24 @@ TEST(Scenario, ReadsTearing) {
 }
 
 TEST(Scenario, BadTearingIsNamed) {
-  EXPECT_THAT(with("tearing", "{}"),
+  EXPECT_THAT(minimal_scenario_error("tearing", "{}"),
               HasSubstr("tearing.strain: expected a positive \"strain\" or at least one of "
                         "\"cuts\" when tearing"));
-  EXPECT_THAT(with("tearing", R"({ "strian": 0.2 })"), HasSubstr("did you mean 'strain'?"));
-  EXPECT_THAT(with("tearing", R"({ "strain": 0.2, "weak_regions": [{ "line": [[0, 0, 0]],
+  EXPECT_THAT(minimal_scenario_error("tearing", R"({ "strian": 0.2 })"),
+              HasSubstr("did you mean 'strain'?"));
+  EXPECT_THAT(
+      minimal_scenario_error("tearing", R"({ "strain": 0.2, "weak_regions": [{ "line": [[0, 0, 0]],
                                   "width": 0.1, "factor": 0.5 }] })"),
-              HasSubstr("tearing.weak_regions[0].line: expected an array of at least 2 points"));
-  EXPECT_THAT(with("tearing", R"({ "strain": 0.2, "weak_regions": [{ "box": { "min": [0, 0, 0],
+      HasSubstr("tearing.weak_regions[0].line: expected an array of at least 2 points"));
+  EXPECT_THAT(minimal_scenario_error(
+                  "tearing", R"({ "strain": 0.2, "weak_regions": [{ "box": { "min": [0, 0, 0],
                                   "max": [1, 1, 1] }, "factor": 0 }] })"),
               HasSubstr("tearing.weak_regions[0].factor: expected a number in (0, 1], got 0"));
-  EXPECT_THAT(with("tearing", R"({ "cuts": [ { "time": 1, "line": [[0, 0, 0], [1, 0, 0]] },
+  EXPECT_THAT(minimal_scenario_error("tearing",
+                                     R"({ "cuts": [ { "time": 1, "line": [[0, 0, 0], [1, 0, 0]] },
                                             { "time": 0.5, "line": [[0, 0, 0], [1, 0, 0]] } ] })"),
               HasSubstr("tearing.cuts[1].time: expected a time not before the previous cut's"));
-  EXPECT_THAT(with("pins", R"([{ "side": "top", "velocity": [0, 1] }])"),
+  EXPECT_THAT(minimal_scenario_error("pins", R"([{ "side": "top", "velocity": [0, 1] }])"),
               HasSubstr("pins[0].velocity: expected an array of 3 finite numbers"));
 }
 
@@ -498,7 +304,7 @@ TEST(Scenario, ReadsAMeshObstacleScaledAndPlaced) {
   EXPECT_EQ(drawn.faces.size(), 12u);
   for (const Eigen::Vector3d& x : drawn.vertices) EXPECT_NEAR(std::abs(x.x()), 0.5, 1e-12);
 
-  EXPECT_THAT(with("obstacles", R"([{ "type": "mesh", "file": "no_such.obj" }])"),
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "mesh", "file": "no_such.obj" }])"),
               HasSubstr("dir/s.json: obstacles[0].file: dir/no_such.obj"));
 }
 
@@ -525,29 +331,30 @@ TEST(Scenario, ReadsAMeshObstacleSoupRotatedFromYUp) {
   EXPECT_THAT(s.notes[0],
               HasSubstr("dropped 6 duplicate and 0 degenerate faces, kept 6 triangles"));
 
-  EXPECT_THAT(with("obstacles", R"([{ "type": "mesh", "file": ")" + file.string() +
-                                    R"(", "rotation": { "angle": 1, "degrees": 90 } }])"),
-              HasSubstr("obstacles[0].rotation.angle: expected exactly one of \"angle\" (rad) "
-                        "and \"degrees\""));
+  EXPECT_THAT(
+      minimal_scenario_error("obstacles", R"([{ "type": "mesh", "file": ")" + file.string() +
+                                              R"(", "rotation": { "angle": 1, "degrees": 90 } }])"),
+      HasSubstr("obstacles[0].rotation.angle: expected exactly one of \"angle\" (rad) "
+                "and \"degrees\""));
 }
 
 TEST(Scenario, BadObstaclesAreNamed) {
-  EXPECT_THAT(with("obstacles", R"([{ "type": "cone" }])"),
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "cone" }])"),
               HasSubstr("dir/s.json: obstacles[0].type: expected one of"));
-  EXPECT_THAT(with("obstacles", R"([{ "type": "sphere", "center": [0, 0, 0] }])"),
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "sphere", "center": [0, 0, 0] }])"),
               HasSubstr("obstacles[0].radius: missing; expected a positive number (m)"));
-  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "radius": 1 }])"),
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "plane", "radius": 1 }])"),
               HasSubstr("obstacles[0].radius: unknown key"));
   EXPECT_THAT(
-      with("obstacles",
-           R"([{ "type": "plane", "static_friction": 0.2, "kinetic_friction": 0.3 }])"),
+      minimal_scenario_error(
+          "obstacles", R"([{ "type": "plane", "static_friction": 0.2, "kinetic_friction": 0.3 }])"),
       HasSubstr("obstacles[0].kinetic_friction: expected a number between 0 and 0.2 (at most "
                 "static_friction)"));
-  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "motion": { "keyframes": [
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "plane", "motion": { "keyframes": [
                   { "time": 1, "offset": [0, 0, 0] }, { "time": 1, "offset": [0, 0, 1] } ] } }])"),
               HasSubstr("obstacles[0].motion.keyframes[1].time: expected a time after the "
                         "previous keyframe's"));
-  EXPECT_THAT(with("obstacles", R"([{ "type": "plane", "normal": [0, 0, 0] }])"),
+  EXPECT_THAT(minimal_scenario_error("obstacles", R"([{ "type": "plane", "normal": [0, 0, 0] }])"),
               HasSubstr("obstacles[0].normal: expected"));
 }
 
