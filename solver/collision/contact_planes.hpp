@@ -71,9 +71,9 @@ void find_contact_planes(const SpringModel& model, const std::vector<Obstacle>& 
 ///   without the contacts (3#P, N): one gradient step of the particle alone takes it to
 ///   x_0 - (h^2 / m) g, and lambda = (m / h^2) times that point's depth below the plane, or 0. A
 ///   particle resting on a floor gets its weight plus what its springs press down, one its springs
-///   lift off none. Not used when the lag is there: the springs' forces at x_0 = x_n + h v_n are
-///   those of an extrapolated shape, and on a garment that legs push and pull (skirt_walk) they
-///   made lambda many times the contact's force (docs/benchmarks.md).
+///   lift off none. Not used when the lag is there: used in its place, the skirt caught on a
+///   walking leg and stayed stretched (skirt_walk, docs/benchmarks.md); the springs' forces at
+///   x_0 = x_n + h v_n are those of an extrapolated shape, not the contact's.
 void lag_contact_friction(const SpringModel& model, const std::vector<Obstacle>& obstacles,
                           const Eigen::MatrixXd* lagged_impulse,
                           const Eigen::VectorXd& first_iterate,
