@@ -16,6 +16,7 @@
 /// Pinned particles are fixed at x_n + h v_n and have no terms of their own.
 
 #include <Eigen/Core>
+#include <algorithm>
 
 #include "solver/collision/contact_planes.hpp"
 #include "solver/spring_model.hpp"
@@ -86,6 +87,23 @@ double relative_correction(const SpringModel& model, double time_step_s,
 /// particles, F_i = m_i (y_i - x_n,i)/h^2 = m_i v_n,i/h + f_ext,i, the momentum and the external
 /// forces the step has to balance (a cloth at rest: its weight).
 double step_force_scale(const SpringModel& model, const StepPotential& potential);
+
+/// The gradient norm a minimiser's gradient_reduction is a fraction of (N): the step's first
+/// gradient, or the tolerance's share of the forces the step balances (step_force_scale()) when
+/// that is larger, so that a cloth starting the step in balance is not held to reduce round-off.
+inline double gradient_reduction_reference(double first_gradient_n, double tolerance,
+                                           double force_scale_n) {
+  return std::max(first_gradient_n, tolerance * force_scale_n);
+}
+
+/// The stop of Newton's and quasi-Newton's steps: the last correction at most `tolerance` times
+/// the step's displacement (relative_correction()) and, with `gradient_reduction` > 0, the
+/// gradient at most that fraction of gradient_reduction_reference() (`gradient_ratio`).
+inline bool minimiser_converged(double correction_ratio, double tolerance, double gradient_ratio,
+                                double gradient_reduction) {
+  return correction_ratio <= tolerance &&
+         (gradient_reduction == 0.0 || gradient_ratio <= gradient_reduction);
+}
 
 /// Relative residual |grad E(x)|_2 / F, dimensionless: the force still out of balance as a
 /// fraction of the forces the step balances (F = step_force_scale()); when F is 0 (no motion, no

@@ -155,8 +155,8 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
   const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
   const double force_scale_n = step_force_scale(model, potential);
   const double first_gradient_n = common.gradient.norm();
-  // what gradient_reduction is a fraction of, as in quasi_newton_step()
-  const double reduced_from_n = std::max(first_gradient_n, options.tolerance * force_scale_n);
+  const double reduced_from_n =
+      gradient_reduction_reference(first_gradient_n, options.tolerance, force_scale_n);
 
   newton.iterations = 0;
   newton.cg_iterations = 0;
@@ -181,9 +181,8 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
         relative_correction(model, potential.time_step_s, newton.correction, common.trial_x,
                             start_x, common.external_force, 1.0);
     newton.gradient_ratio = common.trial_gradient.norm() / reduced_from_n;
-    converged =
-        newton.correction_ratio <= options.tolerance &&
-        (options.gradient_reduction == 0.0 || newton.gradient_ratio <= options.gradient_reduction);
+    converged = minimiser_converged(newton.correction_ratio, options.tolerance,
+                                    newton.gradient_ratio, options.gradient_reduction);
     common.x.swap(common.trial_x);
     common.gradient.swap(common.trial_gradient);
     energy_j = trial_energy_j;

@@ -123,11 +123,8 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   }
   resize_history(3 * particles, options.history, qn);
   const double first_gradient_n = qn.common.gradient.norm();
-  // what gradient_reduction is a fraction of: the first gradient, or the tolerance's share of the
-  // forces the step balances when that is larger (a cloth that starts the step in balance would
-  // otherwise be held to reduce round-off until max_iterations)
-  const double reduced_from_n =
-      std::max(first_gradient_n, options.tolerance * step_force_scale(model, potential));
+  const double reduced_from_n = gradient_reduction_reference(first_gradient_n, options.tolerance,
+                                                             step_force_scale(model, potential));
 
   qn.iterations = 0;
   qn.correction_ratio = 0.0;
@@ -152,9 +149,8 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     qn.correction_ratio = relative_correction(model, h, qn.direction, qn.common.trial_x, state.x,
                                               qn.common.external_force, 1.0);
     qn.gradient_ratio = qn.common.trial_gradient.norm() / reduced_from_n;
-    converged =
-        qn.correction_ratio <= options.tolerance &&
-        (options.gradient_reduction == 0.0 || qn.gradient_ratio <= options.gradient_reduction);
+    converged = minimiser_converged(qn.correction_ratio, options.tolerance, qn.gradient_ratio,
+                                    options.gradient_reduction);
     remember_pair(qn);
     qn.common.x.swap(qn.common.trial_x);
     qn.common.gradient.swap(qn.common.trial_gradient);

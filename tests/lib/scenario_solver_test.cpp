@@ -79,12 +79,12 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
            "newton_fallback": false})",
        "simulation.pd.max_estimated_error=0", "simulation.obstacle_penalty=100",
        "simulation.friction_in_step=false"});
+  const Scenario defaults = parse_scenario(test::minimal_scenario, "s.json", {});
   EXPECT_EQ(s.solver.integrator, Integrator::newton);
   EXPECT_DOUBLE_EQ(s.solver.obstacle_penalty, 100.0);
   EXPECT_FALSE(s.solver.friction_in_step);
-  EXPECT_TRUE(parse_scenario(test::minimal_scenario, "s.json", {}).solver.friction_in_step);
-  EXPECT_DOUBLE_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.obstacle_penalty,
-                   0.0);
+  EXPECT_TRUE(defaults.solver.friction_in_step);
+  EXPECT_DOUBLE_EQ(defaults.solver.obstacle_penalty, 0.0);
   EXPECT_EQ(minimal_scenario_error("simulation.obstacle_penalty", "-1"),
             "dir/s.json: simulation.obstacle_penalty: expected a number >= 0, got -1");
   EXPECT_DOUBLE_EQ(s.solver.newton.tolerance, 0.01);
@@ -92,12 +92,10 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   EXPECT_EQ(s.solver.newton.cg_max_iterations, 50);
   EXPECT_EQ(s.solver.newton.preconditioner, NewtonPreconditioner::pd_matrix);
   EXPECT_DOUBLE_EQ(s.solver.newton.gradient_reduction, 0.3);
-  EXPECT_DOUBLE_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.gradient_reduction, 0.1);
+  EXPECT_DOUBLE_EQ(defaults.solver.newton.gradient_reduction, 0.1);
   EXPECT_THAT(minimal_scenario_error("simulation.newton.gradient_reduction", "-0.1"),
               HasSubstr("simulation.newton.gradient_reduction: expected"));
-  EXPECT_EQ(parse_scenario(test::minimal_scenario, "s.json", {}).solver.newton.preconditioner,
-            NewtonPreconditioner::multigrid);
+  EXPECT_EQ(defaults.solver.newton.preconditioner, NewtonPreconditioner::multigrid);
   EXPECT_THAT(minimal_scenario_error("simulation.newton.preconditioner", R"("jacobi")"),
               HasSubstr("simulation.newton.preconditioner: expected one of"));
   EXPECT_DOUBLE_EQ(s.solver.quasi_newton.tolerance, 0.02);
@@ -105,19 +103,14 @@ TEST(Scenario, ReadsTheMinimisersOptionsAndPdsCheck) {
   EXPECT_EQ(s.solver.quasi_newton.history, 3);
   EXPECT_EQ(s.solver.quasi_newton.initial_hessian, QuasiNewtonInitialHessian::pd_matrix);
   EXPECT_DOUBLE_EQ(s.solver.quasi_newton.gradient_reduction, 0.2);
-  EXPECT_DOUBLE_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.gradient_reduction,
-      0.1);
+  EXPECT_DOUBLE_EQ(defaults.solver.quasi_newton.gradient_reduction, 0.1);
   EXPECT_THAT(minimal_scenario_error("simulation.quasi_newton.gradient_reduction", "1.5"),
               HasSubstr("simulation.quasi_newton.gradient_reduction: expected"));
   EXPECT_FALSE(s.solver.quasi_newton.newton_fallback);
-  EXPECT_TRUE(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.newton_fallback);
+  EXPECT_TRUE(defaults.solver.quasi_newton.newton_fallback);
   EXPECT_THAT(minimal_scenario_error("simulation.quasi_newton.newton_fallback", "1"),
               HasSubstr("simulation.quasi_newton.newton_fallback: expected"));
-  EXPECT_EQ(
-      parse_scenario(test::minimal_scenario, "s.json", {}).solver.quasi_newton.initial_hessian,
-      QuasiNewtonInitialHessian::pd_multigrid);
+  EXPECT_EQ(defaults.solver.quasi_newton.initial_hessian, QuasiNewtonInitialHessian::pd_multigrid);
   EXPECT_THAT(minimal_scenario_error("simulation.quasi_newton.initial_hessian", R"("multigrid")"),
               HasSubstr("simulation.quasi_newton.initial_hessian: expected one of"));
   EXPECT_DOUBLE_EQ(s.solver.pd.max_estimated_error, 0.0);
