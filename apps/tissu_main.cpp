@@ -6,7 +6,7 @@
 
 #include "apps/check_command.hpp"
 #include "apps/material_test_command.hpp"
-#include "apps/passive_openmp.hpp"
+#include "apps/openmp_waiting.hpp"
 #include "apps/render_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/sweep_command.hpp"
@@ -14,7 +14,7 @@
 #include "lib/version_info.hpp"
 
 int main(int argc, char** argv) {
-  tissu::prefer_passive_openmp_waiting(argv);
+  tissu::prefer_short_openmp_spin(argv);
   CLI::App app{"tissu: adaptive mass-spring cloth simulator"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("tissu ") + tissu::tissu_version() + " (commit " +

@@ -4,10 +4,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace tissu {
 namespace {
@@ -66,21 +68,31 @@ int threads_beside_others(double others_cores, int cores) {
   return std::max(1, static_cast<int>(std::lround(static_cast<double>(cores) - others_cores)));
 }
 
-FrameThreadChooser::FrameThreadChooser(int available_threads, double min_window_s)
+FrameThreadChooser::FrameThreadChooser(int available_threads, double min_window_s,
+                                       double first_window_s)
     : m_available_threads(std::max(1, available_threads)),
       m_min_window_s(min_window_s),
+      m_first_window_s(first_window_s),
       m_window_start(sample_cpu_times()),
       m_idle_cores(m_available_threads) {}
 
 int FrameThreadChooser::threads(int particles) {
+  const int wanted = threads_for_particles(particles, m_available_threads);
   if (m_window_start) {
-    const std::optional<CpuTimeSample> now = sample_cpu_times();
-    if (now && now->wall_s - m_window_start->wall_s >= m_min_window_s) {
+    std::optional<CpuTimeSample> now = sample_cpu_times();
+    const bool first_threads = !m_measured && wanted > 1;
+    if (now && first_threads && now->wall_s - m_window_start->wall_s < m_first_window_s) {
+      const double wait_s = m_first_window_s - (now->wall_s - m_window_start->wall_s);
+      std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
+      now = sample_cpu_times();
+    }
+    if (now && (first_threads || now->wall_s - m_window_start->wall_s >= m_min_window_s)) {
       m_idle_cores = threads_beside_others(cores_used_by_others(*m_window_start, *now), now->cores);
       m_window_start = now;
+      m_measured = true;
     }
   }
-  return std::min(threads_for_particles(particles, m_available_threads), m_idle_cores);
+  return std::min(wanted, m_idle_cores);
 }
 
 }  // namespace tissu

@@ -9,8 +9,8 @@
 namespace tissu {
 
 /// Particles each thread should have at least: below, another thread costs the solver more than
-/// it saves, since each parallel loop of a step wakes the sleeping threads (passive waiting) for a
-/// few microseconds of work. On the hanging sheet (Newton, quasi-Newton), two threads were 2.5
+/// it saves, since each parallel loop of a step wakes or waits for the other threads for a few
+/// microseconds of work. On the hanging sheet (Newton, quasi-Newton), two threads were 2.5
 /// times slower than one at 21 x 21 particles, 5 to 13 % slower at 41 x 41, 6 to 12 % faster at
 /// 51 x 51 and 1.4 times faster at 81 x 81 (docs/benchmarks.md, "Threads by cloth size").
 inline constexpr int min_particles_per_thread = 1250;
@@ -48,9 +48,16 @@ int threads_beside_others(double others_cores, int cores);
 /// that the 10 ms ticks of /proc/stat do not decide). An oversubscribed core makes every parallel
 /// loop wait for its slowest thread: beside one busy process on two cores, two threads ran 7 to
 /// 69 % slower than one (docs/benchmarks.md, "Threads beside a busy process").
+///
+/// The first cloth large enough for threads is not given them unmeasured: the chooser waits, if
+/// need be, until `first_window_s` has passed since its construction and measures then. A first
+/// step from rest can be the run's longest (the hanging sheet's took 0.5 s of a 2.2 s run), and
+/// taken on two threads beside a busy process it made the whole run 1.5 times slower than one
+/// thread (docs/benchmarks.md, "2026-12-07").
 class FrameThreadChooser {
  public:
-  explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25);
+  explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25,
+                              double first_window_s = 0.1);
 
   /// The threads for the next frame of a cloth of `particles` particles.
   int threads(int particles);
@@ -58,7 +65,9 @@ class FrameThreadChooser {
  private:
   int m_available_threads;
   double m_min_window_s;
+  double m_first_window_s;
   std::optional<CpuTimeSample> m_window_start;
+  bool m_measured = false;
   int m_idle_cores;  ///< as last measured; m_available_threads before any measurement
 };
 

@@ -74,5 +74,19 @@ TEST(FrameThreadChooser, LeavesACoreToABusyProcess) {
   EXPECT_LE(threads, std::max(1, start->cores - 1)) << "cores: " << start->cores;
 }
 
+TEST(FrameThreadChooser, MeasuresTheOtherProcessesBeforeItFirstGivesThreads) {
+  const std::optional<CpuTimeSample> start = sample_cpu_times();
+  ASSERT_TRUE(start.has_value()) << "/proc/stat unreadable: this test needs Linux";
+  const pid_t child = spin_in_child(0.6);
+  ASSERT_GT(child, 0);
+  // asked at once, before its first window has passed: it waits out 0.15 s and measures
+  FrameThreadChooser chooser(start->cores, 10.0, 0.15);
+  const int threads = chooser.threads(1000000);
+  int child_status = 0;
+  waitpid(child, &child_status, 0);
+
+  EXPECT_LE(threads, std::max(1, start->cores - 1)) << "cores: " << start->cores;
+}
+
 }  // namespace
 }  // namespace tissu

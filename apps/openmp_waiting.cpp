@@ -1,4 +1,4 @@
-#include "apps/passive_openmp.hpp"
+#include "apps/openmp_waiting.hpp"
 
 #include <unistd.h>
 
@@ -6,9 +6,9 @@
 
 namespace tissu {
 
-void prefer_passive_openmp_waiting(char** argv) {
+void prefer_short_openmp_spin(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
-  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  if (setenv("GOMP_SPINCOUNT", tissu_spin_count, 1) != 0) return;
   execv("/proc/self/exe", argv);  // returns only on failure: run on with the default policy
 }
 
