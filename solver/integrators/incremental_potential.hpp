@@ -19,6 +19,7 @@
 #include <algorithm>
 
 #include "solver/collision/contact_planes.hpp"
+#include "solver/forces/symmetric_block_matrix.hpp"
 #include "solver/spring_model.hpp"
 
 namespace tissu {
@@ -41,12 +42,24 @@ struct StepPotentialWorkspace {
   Eigen::VectorXd start_projections_m;  ///< #S d_n . u_n (m), filled by prepare_step_potential()
   Eigen::VectorXd spring_stretch;       ///< #S |d| - l (m), with couplings only
   Eigen::VectorXd coupling_tension;     ///< #S tension the couplings add (N)
+  Eigen::VectorXd no_coupling_tension;  ///< #S zeros: the tension without couplings (N)
 };
 
 /// Fills what the potential keeps for the whole step: the start directions u_n and projections
 /// d_n . u_n.
 void prepare_step_potential(const SpringModel& model, const StepPotential& potential,
                             StepPotentialWorkspace& workspace);
+
+/// Each spring's energy (J) into workspace.spring_energy_j and force on its first end (N) into
+/// workspace.spring_forces at x, elastic plus viscous along the start direction (what
+/// evaluate_step_potential() sums). Springs in parallel, in loops the compiler vectorises: AVX2
+/// where the processor has it (`kernel`, as the block products choose), else SSE2. The two round
+/// differently, so a run's bits depend on the processor, never on the number of threads; AVX2
+/// was 1.4 to 1.75 times faster on the potential at 81^2 to 256^2 particles (docs/benchmarks.md,
+/// "2026-12-07").
+void evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
+                           StepPotentialWorkspace& workspace,
+                           BlockProductKernel kernel = block_product_kernel());
 
 /// E(x) (J); with a gradient, also grad E (3#P, N), zero on pinned particles. Springs in parallel
 /// into per-spring buffers, then gathered per particle in model.incidence order and summed in a
