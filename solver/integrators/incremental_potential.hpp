@@ -54,9 +54,9 @@ void prepare_step_potential(const SpringModel& model, const StepPotential& poten
 /// workspace.spring_forces at x, elastic plus viscous along the start direction (what
 /// evaluate_step_potential() sums). Springs in parallel, in loops the compiler vectorises: AVX2
 /// where the processor has it (`kernel`, as the block products choose), else SSE2. The two round
-/// differently, so a run's bits depend on the processor, never on the number of threads; AVX2
-/// was 1.4 to 1.75 times faster on the potential at 81^2 to 256^2 particles (docs/benchmarks.md,
-/// "2026-12-07").
+/// differently, so a run's bits depend on the processor, never on the number of threads. With
+/// AVX2 the potential took 1.2 to 1.75 times less than with the scalar loop before it, at 81^2 to
+/// 256^2 particles (docs/benchmarks.md, "2026-12-07").
 void evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
                            StepPotentialWorkspace& workspace,
                            BlockProductKernel kernel = block_product_kernel());
