@@ -6,7 +6,7 @@
 
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
-#include "solver/parallel.hpp"
+#include "solver/parallel_sum.hpp"
 
 namespace tissu {
 namespace {
@@ -104,10 +104,15 @@ bool backtracking_line_search(const SpringModel& model, const StepPotential& pot
                               double energy_j, const Eigen::VectorXd& direction,
                               StepPotentialWorkspace& workspace, Eigen::VectorXd& trial_x,
                               Eigen::VectorXd& trial_gradient, double& trial_energy_j) {
-  const double slope_j = gradient.dot(direction);  // dE/dalpha at alpha = 0, < 0
+  const double slope_j = particle_dot(gradient, direction);  // dE/dalpha at alpha = 0, < 0
+  const int particles = model.particle_count();
+  trial_x.resize(x.size());
   double alpha = 1.0;
   for (int backtrack = 0; backtrack <= max_backtracks; ++backtrack, alpha *= 0.5) {
-    trial_x = x + alpha * direction;
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+    for (int p = 0; p < particles; ++p) {
+      trial_x.segment<3>(3 * p) = x.segment<3>(3 * p) + alpha * direction.segment<3>(3 * p);
+    }
     trial_energy_j = evaluate_step_potential(model, potential, trial_x, workspace, &trial_gradient);
     if (trial_energy_j <= energy_j + armijo_slope_fraction * alpha * slope_j +
                               energy_round_off * std::abs(energy_j)) {
@@ -180,15 +185,20 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
 
   const double inertia_per_kg = 1.0 / (h * h);          // 1/h^2 (1/s^2)
   const double air_per_kg = potential.air_damping / h;  // c/h (1/s^2)
-  double particle_energy_j = 0.0;
-  for (int p = 0; p < particles; ++p) {  // serial: a fixed summation order
-    if (model.inverse_mass[p] == 0.0) continue;
-    particle_energy_j +=
-        0.5 * model.mass[p] *
-        (inertia_per_kg * (x.segment<3>(3 * p) - y.segment<3>(3 * p)).squaredNorm() +
-         air_per_kg * (x.segment<3>(3 * p) - x_n.segment<3>(3 * p)).squaredNorm());
-  }
-  double energy_j = particle_energy_j + workspace.spring_energy_j.sum();
+  const double particle_energy_j = chunked_sum(particles, [&](int begin, int end) {
+    double sum_j = 0.0;
+    for (int p = begin; p < end; ++p) {
+      if (model.inverse_mass[p] == 0.0) continue;
+      sum_j += 0.5 * model.mass[p] *
+               (inertia_per_kg * (x.segment<3>(3 * p) - y.segment<3>(3 * p)).squaredNorm() +
+                air_per_kg * (x.segment<3>(3 * p) - x_n.segment<3>(3 * p)).squaredNorm());
+    }
+    return sum_j;
+  });
+  const double spring_energy_j = chunked_sum(model.spring_count(), [&](int begin, int end) {
+    return workspace.spring_energy_j.segment(begin, end - begin).sum();
+  });
+  double energy_j = particle_energy_j + spring_energy_j;
   if (coupled) {
     for (Eigen::Index c = 0; c < model.couplings.rows(); ++c) {
       energy_j += model.coupling_stiffness[c] * workspace.spring_stretch[model.couplings(c, 0)] *
@@ -232,8 +242,12 @@ double relative_correction(const SpringModel& model, double time_step_s,
                            const Eigen::VectorXd& start_x, const Eigen::VectorXd& external_force,
                            double external_fraction) {
   const double h2 = time_step_s * time_step_s;
+  const int particles = model.particle_count();
   double correction2 = 0.0, displacement2 = 0.0, external2 = 0.0;  // squared maxima (m^2)
-  for (int p = 0; p < model.particle_count(); ++p) {
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items) \
+    reduction(max                                                              \
+              : correction2, displacement2, external2)
+  for (int p = 0; p < particles; ++p) {
     if (model.inverse_mass[p] == 0.0) continue;
     correction2 = std::max(correction2, correction.segment<3>(3 * p).squaredNorm());
     displacement2 =

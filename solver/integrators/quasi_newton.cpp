@@ -6,7 +6,7 @@
 
 #include "solver/integrators/newton.hpp"
 #include "solver/integrators/step_minimisation.hpp"
-#include "solver/parallel.hpp"
+#include "solver/parallel_sum.hpp"
 
 namespace tissu {
 namespace {
@@ -62,23 +62,56 @@ void apply_initial_inverse_hessian(const SpringModel& model, QuasiNewtonInitialH
   qn.common.pd_matrix.solve(qn.common.system, q, qn.common.preconditioned);
 }
 
-// direction = -H^-1 gradient by the L-BFGS two-loop recursion
+// v = a w + (replace ? 0 : v), then u . v (0 without u): one pass over the vectors (3#P each),
+// chunked so that the dot product has the same bits on any number of threads
+double axpy_then_dot(double a, const double* w, bool replace, Eigen::VectorXd& v, const double* u) {
+  return chunked_sum(static_cast<int>(v.size() / 3), [&](int begin, int end) {
+    const Eigen::Index start = 3 * begin, size = 3 * (end - begin);
+    auto v_chunk = v.segment(start, size);
+    const Eigen::Map<const Eigen::VectorXd> w_chunk(w + start, size);
+    if (replace) {
+      v_chunk = a * w_chunk;
+    } else {
+      v_chunk += a * w_chunk;
+    }
+    return u == nullptr ? 0.0 : Eigen::Map<const Eigen::VectorXd>(u + start, size).dot(v_chunk);
+  });
+}
+
+// direction = -H^-1 gradient by the L-BFGS two-loop recursion (Nocedal & Wright 2006, algorithm
+// 7.4), run on q = -gradient so that it ends on the direction itself. Each pair's update and the
+// next pair's dot product share one pass over the vectors: history + 1 passes a loop, not 2
+// history.
 void lbfgs_direction(const SpringModel& model, QuasiNewtonInitialHessian kind,
                      QuasiNewtonWorkspace& qn) {
   const int capacity = static_cast<int>(qn.curvature.size());
-  qn.direction = qn.common.gradient;  // q
-  for (int n = 0, k = qn.newest_pair; n < qn.stored_pairs; ++n, k = (k + capacity - 1) % capacity) {
-    qn.coefficient[k] = qn.curvature[k] * qn.position_changes.col(k).dot(qn.direction);
-    qn.direction -= qn.coefficient[k] * qn.gradient_changes.col(k);
+  const int pairs = qn.stored_pairs;
+  const auto s = [&](int k) { return qn.position_changes.col(k).data(); };
+  const auto t = [&](int k) { return qn.gradient_changes.col(k).data(); };
+  qn.direction.resize(qn.common.gradient.size());
+  // newest pair first: alpha_k = rho_k s_k . q, q -= alpha_k t_k
+  int k = qn.newest_pair;
+  double dot = axpy_then_dot(-1.0, qn.common.gradient.data(), true, qn.direction,
+                             pairs > 0 ? s(k) : nullptr);
+  for (int n = 0; n < pairs; ++n) {
+    qn.coefficient[k] = qn.curvature[k] * dot;
+    const int older = (k + capacity - 1) % capacity;
+    dot = axpy_then_dot(-qn.coefficient[k], t(k), false, qn.direction,
+                        n + 1 < pairs ? s(older) : nullptr);
+    k = older;
   }
-  apply_initial_inverse_hessian(model, kind, qn.direction, qn);
-  qn.direction = qn.common.preconditioned;  // r
-  const int oldest = (qn.newest_pair - qn.stored_pairs + 1 + capacity) % std::max(capacity, 1);
-  for (int n = 0, k = oldest; n < qn.stored_pairs; ++n, k = (k + 1) % capacity) {
-    const double beta = qn.curvature[k] * qn.gradient_changes.col(k).dot(qn.direction);
-    qn.direction += (qn.coefficient[k] - beta) * qn.position_changes.col(k);
+  apply_initial_inverse_hessian(model, kind, qn.direction, qn);  // r = H_0 q
+  // oldest pair first: beta = rho_k t_k . r, r += (alpha_k - beta) s_k
+  k = (qn.newest_pair - pairs + 1 + capacity) % std::max(capacity, 1);
+  dot = axpy_then_dot(1.0, qn.common.preconditioned.data(), true, qn.direction,
+                      pairs > 0 ? t(k) : nullptr);
+  for (int n = 0; n < pairs; ++n) {
+    const double beta = qn.curvature[k] * dot;
+    const int newer = (k + 1) % capacity;
+    dot = axpy_then_dot(qn.coefficient[k] - beta, s(k), false, qn.direction,
+                        n + 1 < pairs ? t(newer) : nullptr);
+    k = newer;
   }
-  qn.direction = -qn.direction;
 }
 
 // keeps (s, t) = (trial_x - x, trial_gradient - gradient) when s . t > 0 (the curvature condition
@@ -87,9 +120,17 @@ void remember_pair(QuasiNewtonWorkspace& qn) {
   const int capacity = static_cast<int>(qn.curvature.size());
   if (capacity == 0) return;
   const int slot = (qn.newest_pair + 1) % capacity;
-  qn.position_changes.col(slot) = qn.common.trial_x - qn.common.x;
-  qn.gradient_changes.col(slot) = qn.common.trial_gradient - qn.common.gradient;
-  const double curvature_j = qn.position_changes.col(slot).dot(qn.gradient_changes.col(slot));
+  const MinimisationWorkspace& common = qn.common;
+  auto s = qn.position_changes.col(slot);
+  auto t = qn.gradient_changes.col(slot);
+  const double curvature_j = chunked_sum(static_cast<int>(s.size() / 3), [&](int begin, int end) {
+    const Eigen::Index start = 3 * begin, size = 3 * (end - begin);
+    auto s_chunk = s.segment(start, size);
+    auto t_chunk = t.segment(start, size);
+    s_chunk = common.trial_x.segment(start, size) - common.x.segment(start, size);
+    t_chunk = common.trial_gradient.segment(start, size) - common.gradient.segment(start, size);
+    return s_chunk.dot(t_chunk);
+  });
   if (!(curvature_j > 0.0)) return;
   qn.curvature[slot] = 1.0 / curvature_j;
   qn.newest_pair = slot;
@@ -122,7 +163,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     if (!qn.pd_multigrid.set_extra_diagonal(qn.friction_stiffness)) return StepStatus::non_finite;
   }
   resize_history(3 * particles, options.history, qn);
-  const double first_gradient_n = qn.common.gradient.norm();
+  const double first_gradient_n = particle_norm(qn.common.gradient);
   const double reduced_from_n = gradient_reduction_reference(first_gradient_n, options.tolerance,
                                                              step_force_scale(model, potential));
 
@@ -132,8 +173,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   bool converged = first_gradient_n == 0.0;
   while (!converged && qn.iterations < options.max_iterations) {
     lbfgs_direction(model, options.initial_hessian, qn);
-    if (!(qn.common.gradient.dot(qn.direction) <
-          0.0)) {  // not a descent direction: restart from H_0
+    if (!(particle_dot(qn.common.gradient, qn.direction) < 0.0)) {  // not descending: restart
       clear_history(qn);
       lbfgs_direction(model, options.initial_hessian, qn);
     }
@@ -148,7 +188,7 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
     ++qn.iterations;
     qn.correction_ratio = relative_correction(model, h, qn.direction, qn.common.trial_x, state.x,
                                               qn.common.external_force, 1.0);
-    qn.gradient_ratio = qn.common.trial_gradient.norm() / reduced_from_n;
+    qn.gradient_ratio = particle_norm(qn.common.trial_gradient) / reduced_from_n;
     converged = minimiser_converged(qn.correction_ratio, options.tolerance, qn.gradient_ratio,
                                     options.gradient_reduction);
     remember_pair(qn);

@@ -19,8 +19,22 @@ constexpr int sweeps = 2;                 // damped Jacobi sweeps before and aft
 constexpr double smoother_damping = 0.9;  // omega of the sweeps, where rho(D^-1 A) <= 2
 constexpr double prolongator_damping = 4.0 / 3.0;  // omega rho(D^-1 A) of the smoothed prolongator
 
-// Y = M X, column by column of the 3 x n blocks: Y.col(i) = sum_k M(i, k) X.col(k)
-void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y) {
+// row i of B - A X; inlined, so that the sums stay in registers
+[[gnu::always_inline]] inline Eigen::Vector3d row_residual(const RowMatrix& a,
+                                                           const Eigen::Matrix3Xd& b,
+                                                           const Eigen::Matrix3Xd& x, int i) {
+  const int* columns = a.innerIndexPtr();
+  const double* values = a.valuePtr();
+  Eigen::Vector3d sum = b.col(i);
+  for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k) {
+    sum -= values[k] * x.col(columns[k]);
+  }
+  return sum;
+}
+
+// Y = M X, or Y += M X when `accumulate`, column by column of the 3 x n blocks
+void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y,
+              bool accumulate = false) {
   const int rows = static_cast<int>(m.rows());
   const int* offsets = m.outerIndexPtr();
   const int* columns = m.innerIndexPtr();
@@ -29,7 +43,11 @@ void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y
   for (int i = 0; i < rows; ++i) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (int k = offsets[i]; k < offsets[i + 1]; ++k) sum += values[k] * x.col(columns[k]);
-    y.col(i) = sum;
+    if (accumulate) {
+      y.col(i) += sum;
+    } else {
+      y.col(i) = sum;
+    }
   }
 }
 
@@ -37,14 +55,19 @@ void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y
 void residual(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::Matrix3Xd& x,
               Eigen::Matrix3Xd& r) {
   const int rows = static_cast<int>(a.rows());
-  const int* offsets = a.outerIndexPtr();
-  const int* columns = a.innerIndexPtr();
-  const double* values = a.valuePtr();
+#pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
+  for (int i = 0; i < rows; ++i) r.col(i) = row_residual(a, b, x, i);
+}
+
+// one damped Jacobi sweep into another buffer, X_swept = X + S (B - A X), S = diag(omega / A_ii);
+// from X = 0 (no `x`) it is X_swept = S B
+void jacobi_sweep(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::VectorXd& scale,
+                  const Eigen::Matrix3Xd* x, Eigen::Matrix3Xd& swept) {
+  const int rows = static_cast<int>(a.rows());
 #pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
   for (int i = 0; i < rows; ++i) {
-    Eigen::Vector3d sum = b.col(i);
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k) sum -= values[k] * x.col(columns[k]);
-    r.col(i) = sum;
+    swept.col(i) = x == nullptr ? Eigen::Vector3d(scale[i] * b.col(i))
+                                : Eigen::Vector3d(x->col(i) + scale[i] * row_residual(a, b, *x, i));
   }
 }
 
@@ -218,24 +241,20 @@ void PdMultigrid::cycle(int index) {
     level.solution = m_coarsest->solve(level.right_side.transpose()).transpose();
     return;
   }
-  const auto jacobi_correction = [&](const Eigen::Matrix3Xd& r) {
-    level.solution += r * level.jacobi_scale.asDiagonal();
+  // each sweep writes the residual's buffer, free until the restriction, then takes it back
+  const auto sweep_again = [&] {
+    jacobi_sweep(level.matrix, level.right_side, level.jacobi_scale, &level.solution,
+                 level.residual);
+    level.solution.swap(level.residual);
   };
-  level.solution = level.right_side * level.jacobi_scale.asDiagonal();  // the first sweep from 0
-  for (int sweep = 1; sweep < sweeps; ++sweep) {
-    residual(level.matrix, level.right_side, level.solution, level.residual);
-    jacobi_correction(level.residual);
-  }
+  jacobi_sweep(level.matrix, level.right_side, level.jacobi_scale, nullptr, level.solution);
+  for (int sweep = 1; sweep < sweeps; ++sweep) sweep_again();
   residual(level.matrix, level.right_side, level.solution, level.residual);
   PdMultigridLevel& coarse = m_levels[index + 1];
   multiply(level.restrictor, level.residual, coarse.right_side);
   cycle(index + 1);
-  multiply(level.prolongator, coarse.solution, level.residual);
-  level.solution += level.residual;
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    residual(level.matrix, level.right_side, level.solution, level.residual);
-    jacobi_correction(level.residual);
-  }
+  multiply(level.prolongator, coarse.solution, level.solution, true);  // X += P E
+  for (int sweep = 0; sweep < sweeps; ++sweep) sweep_again();
 }
 
 bool PdMultigrid::apply(const SpringModel& model, const PdSystem& system, const Eigen::VectorXd& r,
@@ -243,11 +262,13 @@ bool PdMultigrid::apply(const SpringModel& model, const PdSystem& system, const 
   if (!prepare(model, system)) return false;
   PdMultigridLevel& finest = m_levels[0];
   const int free_count = static_cast<int>(system.free_particles.size());
+#pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int f = 0; f < free_count; ++f) {
     finest.right_side.col(f) = r.segment<3>(3 * system.free_particles[f]);
   }
   cycle(0);
   z.setZero(r.size());
+#pragma omp parallel for schedule(static) if (free_count >= min_parallel_items)
   for (int f = 0; f < free_count; ++f) {
     z.segment<3>(3 * system.free_particles[f]) = finest.solution.col(f);
   }
