@@ -9,9 +9,9 @@
 /// Brezina 1996, "Algebraic multigrid by smoothed aggregation for second and fourth order elliptic
 /// problems"). Meant as an approximate inverse: the initial Hessian of quasi-Newton (Liu, Bouaziz
 /// & Kavan 2017 use the factorised PD matrix there). On the stiff sheet a cycle divides the error
-/// by about 3 at any size and costs 0.48, 1.3 and 5.3 ms at 81^2, 128^2 and 256^2 particles, where
-/// the factor's float solve takes 1.2, 3.7 and 19 ms (docs/benchmarks.md, "quasi-Newton's initial
-/// Hessian by multigrid").
+/// by about 2 at any size and costs 0.33, 0.79 and 3.3 ms at 81^2, 128^2 and 256^2 particles on
+/// one thread, where the factor's float solve takes 1.2, 3.7 and 19 ms (docs/benchmarks.md,
+/// "quasi-Newton's initial Hessian by multigrid" and "one sweep a side").
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>

@@ -72,16 +72,17 @@ TEST(PdMultigrid, IsASymmetricPositiveDefiniteApproximateInverse) {
   EXPECT_LT((pd_product(system, bu) - u).norm(), 0.9 * u.norm());
 }
 
-TEST(PdMultigrid, EachCycleDividesTheErrorByAboutThreeAtAnySize) {
-  // measured 0.17, 0.32 and 0.34 at 41, 81 and 128 particles a side (Jacobi smoothing alone
-  // would leave the smooth error almost untouched: m/h^2 is 5e-6 of a particle's spring sum)
+TEST(PdMultigrid, EachCycleDividesTheErrorByAboutTwoAtAnySize) {
+  // measured 0.29, 0.46 and 0.47 at 41, 81 and 128 particles a side with one sweep a side (Jacobi
+  // smoothing alone would leave the smooth error almost untouched: m/h^2 is 5e-6 of a particle's
+  // spring sum)
   for (int n : {41, 81, 128}) {
     State state;
     const SpringModel model = test::stiff_sheet(n, state);
     PdSystem system;
     update_pd_system(model, time_step_s, system);
     PdMultigrid multigrid;
-    EXPECT_LT(error_factor_per_cycle(model, system, multigrid), 0.4) << n << " a side";
+    EXPECT_LT(error_factor_per_cycle(model, system, multigrid), 0.5) << n << " a side";
     EXPECT_GE(multigrid.level_count(), 3) << n << " a side";
     EXPECT_LE(multigrid.node_count(multigrid.level_count() - 1), 100);
   }
