@@ -63,8 +63,8 @@ struct RunEnd {
 };
 
 RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
-                  const std::filesystem::path& output_dir, StopRequest stop, RunRecord& record,
-                  bool& folder_taken) {
+                  const std::filesystem::path& output_dir, StopRequest stop,
+                  FrameThreadChooser& thread_chooser, RunRecord& record, bool& folder_taken) {
   RunOptions options;
   options.output_dir = output_dir;
   options.on_folder_taken = [&folder_taken] { folder_taken = true; };
@@ -75,7 +75,6 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   // processes leave idle, at every frame, unless the scenario or OMP_NUM_THREADS chose them
   // (lib/thread_count.hpp)
   const bool threads_chosen = scenario.threads > 0 || std::getenv("OMP_NUM_THREADS") != nullptr;
-  FrameThreadChooser thread_chooser(omp_get_max_threads());
   options.on_frame = [&, threads_chosen](const FrameStats& row) {
     if (!threads_chosen) omp_set_num_threads(thread_chooser.threads(row.particles));
     if (!command.quiet) progress(row);
@@ -128,6 +127,9 @@ int execute(const RunCommand& command) {
   std::filesystem::path output_dir;
   bool folder_taken = false;  // run.json goes only into a folder this run has cleared
   RunEnd end{1, "error", ""};
+  // made before the scenario loads, so that the first measurement of the other processes can
+  // count the set-up's time rather than wait for its own (lib/thread_count.hpp)
+  FrameThreadChooser thread_chooser(omp_get_max_threads());
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
     for (const std::string& note : scenario.notes)
@@ -138,7 +140,7 @@ int execute(const RunCommand& command) {
     record.frames = command.frames.value_or(scenario.frames);
     output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                             : std::filesystem::path(command.output_dir);
-    end = run_loaded(command, scenario, output_dir, stop, record, folder_taken);
+    end = run_loaded(command, scenario, output_dir, stop, thread_chooser, record, folder_taken);
   } catch (const ScenarioError& e) {
     end.message = e.what();
   } catch (const MeshError& e) {
