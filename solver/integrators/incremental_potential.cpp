@@ -244,9 +244,10 @@ double relative_correction(const SpringModel& model, double time_step_s,
   const double h2 = time_step_s * time_step_s;
   const int particles = model.particle_count();
   double correction2 = 0.0, displacement2 = 0.0, external2 = 0.0;  // squared maxima (m^2)
-#pragma omp parallel for schedule(static) if (particles >= min_parallel_items) \
-    reduction(max                                                              \
-              : correction2, displacement2, external2)
+  // clang-format off
+#pragma omp parallel for reduction(max : correction2, displacement2, external2) \
+    schedule(static) if (particles >= min_parallel_items)
+  // clang-format on
   for (int p = 0; p < particles; ++p) {
     if (model.inverse_mass[p] == 0.0) continue;
     correction2 = std::max(correction2, correction.segment<3>(3 * p).squaredNorm());
