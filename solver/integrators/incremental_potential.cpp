@@ -140,8 +140,8 @@ void prepare_step_potential(const SpringModel& model, const StepPotential& poten
   }
 }
 
-void evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
-                           StepPotentialWorkspace& workspace, BlockProductKernel kernel) {
+double evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
+                             StepPotentialWorkspace& workspace, BlockProductKernel kernel) {
   const int springs = model.spring_count();
   assert(workspace.start_directions.cols() == springs && "call prepare_step_potential() first");
   const bool coupled = model.couplings.rows() > 0;
@@ -164,13 +164,10 @@ void evaluate_spring_terms(const SpringModel& model, double time_step_s, const E
       workspace.start_projections_m.data(),
       1.0 / time_step_s};
   auto* const terms = spring_terms_kernel(kernel);
-  constexpr int springs_per_chunk = 256;
-  const int chunks = (springs + springs_per_chunk - 1) / springs_per_chunk;
-#pragma omp parallel for schedule(static) if (springs >= min_parallel_items)
-  for (int c = 0; c < chunks; ++c) {
-    terms(inputs, c * springs_per_chunk, std::min(springs, (c + 1) * springs_per_chunk),
-          workspace.spring_energy_j.data(), workspace.spring_forces.data());
-  }
+  return chunked_sum(springs, [&](int begin, int end) {
+    terms(inputs, begin, end, workspace.spring_energy_j.data(), workspace.spring_forces.data());
+    return workspace.spring_energy_j.segment(begin, end - begin).sum();
+  });
 }
 
 double evaluate_step_potential(const SpringModel& model, const StepPotential& potential,
@@ -180,57 +177,45 @@ double evaluate_step_potential(const SpringModel& model, const StepPotential& po
   const double h = potential.time_step_s;
   const Eigen::VectorXd& x_n = *potential.start_x;
   const Eigen::VectorXd& y = *potential.inertial;
-  const bool coupled = model.couplings.rows() > 0;
-  evaluate_spring_terms(model, h, x, workspace);
+  const double spring_energy_j = evaluate_spring_terms(model, h, x, workspace);
 
   const double inertia_per_kg = 1.0 / (h * h);          // 1/h^2 (1/s^2)
   const double air_per_kg = potential.air_damping / h;  // c/h (1/s^2)
+  const ParticleSpringIncidence& incidence = model.incidence;
+  if (gradient != nullptr) gradient->resize(3 * particles);
+  // each free particle's inertia and air damping, and with a gradient its own: those terms' plus
+  // its springs' forces, gathered in model.incidence order
   const double particle_energy_j = chunked_sum(particles, [&](int begin, int end) {
     double sum_j = 0.0;
     for (int p = begin; p < end; ++p) {
-      if (model.inverse_mass[p] == 0.0) continue;
+      if (model.inverse_mass[p] == 0.0) {
+        if (gradient != nullptr) gradient->segment<3>(3 * p).setZero();
+        continue;
+      }
+      const Eigen::Vector3d from_inertial_m = x.segment<3>(3 * p) - y.segment<3>(3 * p);
+      const Eigen::Vector3d from_start_m = x.segment<3>(3 * p) - x_n.segment<3>(3 * p);
       sum_j += 0.5 * model.mass[p] *
-               (inertia_per_kg * (x.segment<3>(3 * p) - y.segment<3>(3 * p)).squaredNorm() +
-                air_per_kg * (x.segment<3>(3 * p) - x_n.segment<3>(3 * p)).squaredNorm());
+               (inertia_per_kg * from_inertial_m.squaredNorm() +
+                air_per_kg * from_start_m.squaredNorm());
+      if (gradient == nullptr) continue;
+      Eigen::Vector3d g =
+          model.mass[p] * (inertia_per_kg * from_inertial_m + air_per_kg * from_start_m);
+      for (int e = incidence.offsets[p]; e < incidence.offsets[p + 1]; ++e) {
+        const auto force = workspace.spring_forces.col(incidence.springs[e]);
+        if (incidence.first_end[e]) {
+          g -= force;
+        } else {
+          g += force;
+        }
+      }
+      gradient->segment<3>(3 * p) = g;
     }
     return sum_j;
   });
-  const double spring_energy_j = chunked_sum(model.spring_count(), [&](int begin, int end) {
-    return workspace.spring_energy_j.segment(begin, end - begin).sum();
-  });
   double energy_j = particle_energy_j + spring_energy_j;
-  if (coupled) {
-    for (Eigen::Index c = 0; c < model.couplings.rows(); ++c) {
-      energy_j += model.coupling_stiffness[c] * workspace.spring_stretch[model.couplings(c, 0)] *
-                  workspace.spring_stretch[model.couplings(c, 1)];
-    }
-  }
-  if (gradient == nullptr) {
-    if (potential.contacts != nullptr)
-      energy_j += add_contact_potential(*potential.contacts, x, nullptr);
-    return energy_j;
-  }
-
-  const ParticleSpringIncidence& incidence = model.incidence;
-  gradient->resize(3 * particles);
-#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
-  for (int p = 0; p < particles; ++p) {
-    if (model.inverse_mass[p] == 0.0) {
-      gradient->segment<3>(3 * p).setZero();
-      continue;
-    }
-    Eigen::Vector3d g =
-        model.mass[p] * (inertia_per_kg * (x.segment<3>(3 * p) - y.segment<3>(3 * p)) +
-                         air_per_kg * (x.segment<3>(3 * p) - x_n.segment<3>(3 * p)));
-    for (int e = incidence.offsets[p]; e < incidence.offsets[p + 1]; ++e) {
-      const auto force = workspace.spring_forces.col(incidence.springs[e]);
-      if (incidence.first_end[e]) {
-        g -= force;
-      } else {
-        g += force;
-      }
-    }
-    gradient->segment<3>(3 * p) = g;
+  for (Eigen::Index c = 0; c < model.couplings.rows(); ++c) {
+    energy_j += model.coupling_stiffness[c] * workspace.spring_stretch[model.couplings(c, 0)] *
+                workspace.spring_stretch[model.couplings(c, 1)];
   }
   if (potential.contacts != nullptr)
     energy_j += add_contact_potential(*potential.contacts, x, gradient);

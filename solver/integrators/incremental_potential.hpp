@@ -51,15 +51,15 @@ void prepare_step_potential(const SpringModel& model, const StepPotential& poten
                             StepPotentialWorkspace& workspace);
 
 /// Each spring's energy (J) into workspace.spring_energy_j and force on its first end (N) into
-/// workspace.spring_forces at x, elastic plus viscous along the start direction (what
-/// evaluate_step_potential() sums). Springs in parallel, in loops the compiler vectorises: AVX2
-/// where the processor has it (`kernel`, as the block products choose), else SSE2. The two round
-/// differently, so a run's bits depend on the processor, never on the number of threads. With
-/// AVX2 the potential took 1.2 to 1.75 times less than with the scalar loop before it, at 81^2 to
-/// 256^2 particles (docs/benchmarks.md, "2026-12-07").
-void evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
-                           StepPotentialWorkspace& workspace,
-                           BlockProductKernel kernel = block_product_kernel());
+/// workspace.spring_forces at x, elastic plus viscous along the start direction; returns their
+/// sum (J), added in fixed chunks (parallel_sum.hpp). Springs in parallel, in loops the compiler
+/// vectorises: AVX2 where the processor has it (`kernel`, as the block products choose), else
+/// SSE2. The two round differently, so a run's bits depend on the processor, never on the number
+/// of threads. With AVX2 the potential took 1.2 to 1.75 times less than with the scalar loop
+/// before it, at 81^2 to 256^2 particles (docs/benchmarks.md, "2026-12-07").
+double evaluate_spring_terms(const SpringModel& model, double time_step_s, const Eigen::VectorXd& x,
+                             StepPotentialWorkspace& workspace,
+                             BlockProductKernel kernel = block_product_kernel());
 
 /// E(x) (J); with a gradient, also grad E (3#P, N), zero on pinned particles. Springs in parallel
 /// into per-spring buffers, then gathered per particle in model.incidence order and summed in a

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "solver/forces/spring_force.hpp"
@@ -34,7 +35,8 @@ TEST(SpringTerms, AreEachSpringsElasticAndViscousEnergyAndForceOnEveryKernel) {
   prepare_step_potential(model, potential, workspace);
 
   for (const BlockProductKernel kernel : kernels_this_processor_runs()) {
-    evaluate_spring_terms(model, time_step_s, x, workspace, kernel);
+    const double total_j = evaluate_spring_terms(model, time_step_s, x, workspace, kernel);
+    EXPECT_NEAR(total_j, workspace.spring_energy_j.sum(), 1e-12 * (1.0 + std::abs(total_j)));
     for (int s = 0; s < model.spring_count(); ++s) {
       const Eigen::Vector3d d =
           x.segment<3>(3 * model.springs(s, 0)) - x.segment<3>(3 * model.springs(s, 1));
