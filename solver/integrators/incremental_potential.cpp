@@ -100,11 +100,10 @@ void predict_step(const SpringModel& model, double time_step_s, const State& sta
 }
 
 bool backtracking_line_search(const SpringModel& model, const StepPotential& potential,
-                              const Eigen::VectorXd& x, const Eigen::VectorXd& gradient,
-                              double energy_j, const Eigen::VectorXd& direction,
-                              StepPotentialWorkspace& workspace, Eigen::VectorXd& trial_x,
-                              Eigen::VectorXd& trial_gradient, double& trial_energy_j) {
-  const double slope_j = particle_dot(gradient, direction);  // dE/dalpha at alpha = 0, < 0
+                              const Eigen::VectorXd& x, double slope_j, double energy_j,
+                              const Eigen::VectorXd& direction, StepPotentialWorkspace& workspace,
+                              Eigen::VectorXd& trial_x, Eigen::VectorXd& trial_gradient,
+                              double& trial_energy_j) {
   const int particles = model.particle_count();
   trial_x.resize(x.size());
   double alpha = 1.0;

@@ -74,16 +74,17 @@ void predict_step(const SpringModel& model, double time_step_s, const State& sta
                   const Eigen::VectorXd& external_force, Eigen::VectorXd& first_iterate,
                   Eigen::VectorXd& inertial);
 
-/// Backtracking line search on E from x along `direction` (a descent direction): tries alpha =
-/// 1, 1/2, 1/4, ... (at most 30 halvings) until the sufficient decrease of Armijo,
-/// E(x + alpha d) <= E(x) + 1e-4 alpha grad E . d, holds, a decrease within round-off of E
-/// (1e-13 |E|) counting as one (Hager & Zhang 2005's approximate Wolfe test: near the minimum
-/// E's differences drown in its size). True with trial_x, trial_gradient, trial_energy_j set.
+/// Backtracking line search on E from x along `direction` d (a descent direction, whose slope
+/// grad E . d (J) the caller gives): tries alpha = 1, 1/2, 1/4, ... (at most 30 halvings) until
+/// the sufficient decrease of Armijo, E(x + alpha d) <= E(x) + 1e-4 alpha grad E . d, holds, a
+/// decrease within round-off of E (1e-13 |E|) counting as one (Hager & Zhang 2005's approximate
+/// Wolfe test: near the minimum E's differences drown in its size). True with trial_x,
+/// trial_gradient, trial_energy_j set.
 bool backtracking_line_search(const SpringModel& model, const StepPotential& potential,
-                              const Eigen::VectorXd& x, const Eigen::VectorXd& gradient,
-                              double energy_j, const Eigen::VectorXd& direction,
-                              StepPotentialWorkspace& workspace, Eigen::VectorXd& trial_x,
-                              Eigen::VectorXd& trial_gradient, double& trial_energy_j);
+                              const Eigen::VectorXd& x, double slope_j, double energy_j,
+                              const Eigen::VectorXd& direction, StepPotentialWorkspace& workspace,
+                              Eigen::VectorXd& trial_x, Eigen::VectorXd& trial_gradient,
+                              double& trial_energy_j);
 
 /// max_i |dx_i| / max(max_i |x_i - x_n,i|, a max_i h^2 |f_ext,i| / m_i) over the free particles:
 /// a correction dx (3#P, m) of the iterate x (3#P, m) relative to the step's displacement from

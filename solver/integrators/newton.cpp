@@ -7,7 +7,7 @@
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/integrators/step_minimisation.hpp"
-#include "solver/parallel.hpp"
+#include "solver/parallel_sum.hpp"
 
 namespace tissu {
 namespace {
@@ -171,9 +171,10 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
         solve_newton_system(options.preconditioner, model.couplings.rows() > 0, common, newton,
                             forcing_term, options.cg_max_iterations);
     double trial_energy_j = energy_j;
-    if (!backtracking_line_search(model, potential, common.x, common.gradient, energy_j,
-                                  newton.correction, common.potential, common.trial_x,
-                                  common.trial_gradient, trial_energy_j)) {
+    const double slope_j = particle_dot(common.gradient, newton.correction);
+    if (!backtracking_line_search(model, potential, common.x, slope_j, energy_j, newton.correction,
+                                  common.potential, common.trial_x, common.trial_gradient,
+                                  trial_energy_j)) {
       break;  // no decrease along the Newton direction: round-off, or an indefinite coupling
     }
     ++newton.iterations;

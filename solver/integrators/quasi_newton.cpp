@@ -81,18 +81,18 @@ double axpy_then_dot(double a, const double* w, bool replace, Eigen::VectorXd& v
 // direction = -H^-1 gradient by the L-BFGS two-loop recursion (Nocedal & Wright 2006, algorithm
 // 7.4), run on q = -gradient so that it ends on the direction itself. Each pair's update and the
 // next pair's dot product share one pass over the vectors: history + 1 passes a loop, not 2
-// history.
-void lbfgs_direction(const SpringModel& model, QuasiNewtonInitialHessian kind,
-                     QuasiNewtonWorkspace& qn) {
+// history. Returns gradient . direction (J, < 0 for a descent direction), from the last pass.
+double lbfgs_direction(const SpringModel& model, QuasiNewtonInitialHessian kind,
+                       QuasiNewtonWorkspace& qn) {
   const int capacity = static_cast<int>(qn.curvature.size());
   const int pairs = qn.stored_pairs;
   const auto s = [&](int k) { return qn.position_changes.col(k).data(); };
   const auto t = [&](int k) { return qn.gradient_changes.col(k).data(); };
+  const double* gradient = qn.common.gradient.data();
   qn.direction.resize(qn.common.gradient.size());
   // newest pair first: alpha_k = rho_k s_k . q, q -= alpha_k t_k
   int k = qn.newest_pair;
-  double dot = axpy_then_dot(-1.0, qn.common.gradient.data(), true, qn.direction,
-                             pairs > 0 ? s(k) : nullptr);
+  double dot = axpy_then_dot(-1.0, gradient, true, qn.direction, pairs > 0 ? s(k) : nullptr);
   for (int n = 0; n < pairs; ++n) {
     qn.coefficient[k] = qn.curvature[k] * dot;
     const int older = (k + capacity - 1) % capacity;
@@ -104,14 +104,15 @@ void lbfgs_direction(const SpringModel& model, QuasiNewtonInitialHessian kind,
   // oldest pair first: beta = rho_k t_k . r, r += (alpha_k - beta) s_k
   k = (qn.newest_pair - pairs + 1 + capacity) % std::max(capacity, 1);
   dot = axpy_then_dot(1.0, qn.common.preconditioned.data(), true, qn.direction,
-                      pairs > 0 ? t(k) : nullptr);
+                      pairs > 0 ? t(k) : gradient);
   for (int n = 0; n < pairs; ++n) {
     const double beta = qn.curvature[k] * dot;
     const int newer = (k + 1) % capacity;
     dot = axpy_then_dot(qn.coefficient[k] - beta, s(k), false, qn.direction,
-                        n + 1 < pairs ? t(newer) : nullptr);
+                        n + 1 < pairs ? t(newer) : gradient);
     k = newer;
   }
+  return dot;
 }
 
 // keeps (s, t) = (trial_x - x, trial_gradient - gradient) when s . t > 0 (the curvature condition
@@ -172,15 +173,15 @@ StepStatus quasi_newton_step(const SpringModel& model, const SolverParams& param
   qn.gradient_ratio = 0.0;
   bool converged = first_gradient_n == 0.0;
   while (!converged && qn.iterations < options.max_iterations) {
-    lbfgs_direction(model, options.initial_hessian, qn);
-    if (!(particle_dot(qn.common.gradient, qn.direction) < 0.0)) {  // not descending: restart
+    double slope_j = lbfgs_direction(model, options.initial_hessian, qn);
+    if (!(slope_j < 0.0)) {  // not a descent direction: restart from H_0
       clear_history(qn);
-      lbfgs_direction(model, options.initial_hessian, qn);
+      slope_j = lbfgs_direction(model, options.initial_hessian, qn);
     }
     double trial_energy_j = energy_j;
-    if (!backtracking_line_search(model, potential, qn.common.x, qn.common.gradient, energy_j,
-                                  qn.direction, qn.common.potential, qn.common.trial_x,
-                                  qn.common.trial_gradient, trial_energy_j)) {
+    if (!backtracking_line_search(model, potential, qn.common.x, slope_j, energy_j, qn.direction,
+                                  qn.common.potential, qn.common.trial_x, qn.common.trial_gradient,
+                                  trial_energy_j)) {
       if (qn.stored_pairs == 0) break;  // not even H_0's direction descends: round-off
       clear_history(qn);
       continue;
