@@ -5,7 +5,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -74,7 +73,7 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   // threads from the cloth's size (it changes with refinement and tearing) and the cores other
   // processes leave idle, at every frame, unless the scenario or OMP_NUM_THREADS chose them
   // (lib/thread_count.hpp)
-  const bool threads_chosen = scenario.threads > 0 || std::getenv("OMP_NUM_THREADS") != nullptr;
+  const bool threads_chosen = user_chose_threads(scenario.threads);
   options.on_frame = [&, threads_chosen](const FrameStats& row) {
     if (!threads_chosen) omp_set_num_threads(thread_chooser.threads(row.particles));
     if (!command.quiet) progress(row);

@@ -43,7 +43,8 @@ std::vector<StatsColumn> stats_columns(const FrameStats& r) {
           {"pin_force", r.pin_force},
           {"max_stretch", r.max_stretch},
           {"solver_iterations", double(r.solver_iterations)},
-          {"strain_limited", double(r.strain_limited)}};
+          {"strain_limited", double(r.strain_limited)},
+          {"threads", double(r.threads)}};
 }
 
 StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics") {

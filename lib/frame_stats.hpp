@@ -44,6 +44,9 @@ struct FrameStats {
   /// structural springs the strain limit shortened, over the frame's steps (each step's first
   /// sweep; solver/strain_limit.hpp); 0 without `simulation.strain_limit`
   int strain_limited = 0;
+  /// OpenMP threads the frame's steps ran on (0 for frame 0, which has none): what the program's
+  /// thread choice gave the frame (apps: lib/thread_count.hpp)
+  int threads = 0;
 };
 
 /// A column of stats.csv and its value in a row (integers exactly, as doubles).

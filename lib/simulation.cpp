@@ -1,5 +1,7 @@
 #include "lib/simulation.hpp"
 
+#include <omp.h>
+
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -47,6 +49,7 @@ struct FrameSteps {
   int tip_splits = 0;      ///< edges bisected around crack tips
   int iterations = 0;      ///< the integrator's, over the steps
   int strain_limited = 0;  ///< springs the strain limit shortened, over the steps
+  int threads = 0;         ///< OpenMP threads the steps ran on
   bool stopped = false;    ///< a stop was requested before all the frame's steps were made
 
   void add(StepStatus status, const SolverParams& params, const StepWorkspace& workspace) {
@@ -86,6 +89,7 @@ FrameStats measure(const CompiledCloth& cloth, const ClothComplex& lcc,
   s.max_stretch = max_spring_strain(m, cloth.state.x, SpringKind::structural);
   s.solver_iterations = steps.iterations;
   s.strain_limited = steps.strain_limited;
+  s.threads = steps.threads;
   return s;
 }
 
@@ -176,6 +180,7 @@ std::optional<Divergence> step_frame_of(const Scenario& scenario, ClothComplex& 
                                         PinHandles& handles, TearStep& tearing, SpeedLimit& limit,
                                         State& before_step, FrameSteps& steps, StopRequest stop) {
   const auto start = std::chrono::steady_clock::now();
+  steps.threads = omp_get_max_threads();
   for (int sub = 0; sub < scenario.substeps; ++sub) {
     if (stop.requested()) {
       steps.stopped = true;
@@ -434,6 +439,10 @@ void Simulation::step_frame() {
 
 int Simulation::frame() const {
   return m_run->frame;
+}
+
+int Simulation::particle_count() const {
+  return m_run->cloth.model.particle_count();
 }
 
 const Scenario& Simulation::scenario() const {

@@ -114,6 +114,8 @@ class Simulation {
   /// and the cloth is then left in its state before that step.
   void step_frame();
   int frame() const;
+  /// The cloth's particles now (refinement and tearing change them).
+  int particle_count() const;
   const Scenario& scenario() const;
   /// The cloth now.
   FrameArrays arrays() const;

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -29,6 +30,10 @@ long long busy_ticks(std::istringstream& fields) {
 }
 
 }  // namespace
+
+bool user_chose_threads(int scenario_threads) {
+  return scenario_threads > 0 || std::getenv("OMP_NUM_THREADS") != nullptr;
+}
 
 std::optional<CpuTimeSample> sample_cpu_times() {
   cpu_set_t allowed;

@@ -21,6 +21,10 @@ inline int threads_for_particles(int particles, int available_threads) {
   return std::max(1, std::min(particles / min_particles_per_thread, available_threads));
 }
 
+/// Whether the user chose the thread count: the scenario's `threads` (> 0) or OMP_NUM_THREADS in
+/// the environment. Programs choose it themselves (FrameThreadChooser) only when not.
+bool user_chose_threads(int scenario_threads);
+
 /// CPU time counters read at one instant.
 struct CpuTimeSample {
   double wall_s = 0;          ///< monotonic clock

@@ -16,6 +16,7 @@
 #include "lib/scenario/scenario.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/simulation.hpp"
+#include "lib/thread_count.hpp"
 #include "topology/indexed_mesh.hpp"
 #include "topology/pin_selection.hpp"
 
@@ -63,10 +64,40 @@ py::dict arrays_dict(const FrameArrays& a) {
   return d;
 }
 
-/// The scenario's thread count, if it gives one (results do not depend on it).
-void apply_threads(const Scenario& scenario) {
-  if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
-}
+/// The calling thread's OpenMP thread count, as `tissu run` sets it: the scenario's `threads` or
+/// OMP_NUM_THREADS if the user gave one, otherwise chosen before every frame from the cloth's size
+/// and the cores other processes leave idle (lib/thread_count.hpp), so that runs side by side (a
+/// parameter sweep) do not share cores. Results do not depend on it.
+class ThreadChoice {
+ public:
+  explicit ThreadChoice(const Scenario& scenario)
+      : m_user_chose(user_chose_threads(scenario.threads)),
+        // the cores, not omp_get_max_threads(): an earlier run's choice may have lowered that
+        m_chooser(omp_get_num_procs()) {
+    if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
+  }
+
+  void before_frame(int particles) {
+    if (!m_user_chose) omp_set_num_threads(m_chooser.threads(particles));
+  }
+
+ private:
+  bool m_user_chose;
+  FrameThreadChooser m_chooser;
+};
+
+/// A Simulation with its thread choice (python.Simulation).
+struct SteppedSimulation {
+  explicit SteppedSimulation(const Scenario& scenario) : threads(scenario), simulation(scenario) {}
+
+  void step_frame() {
+    threads.before_frame(simulation.particle_count());
+    simulation.step_frame();
+  }
+
+  ThreadChoice threads;  // first: it sets the threads before the cloth is compiled
+  Simulation simulation;
+};
 
 }  // namespace
 }  // namespace tissu
@@ -110,35 +141,33 @@ PYBIND11_MODULE(_tissu, m) {
       py::arg("file"), py::arg("overrides") = std::vector<std::string>{},
       "Loads a scenario file with KEY=VALUE overrides (the CLI's --set)");
 
-  py::class_<Simulation>(m, "Simulation", "A scenario's cloth stepped one frame at a time")
-      .def(py::init([](const Scenario& scenario) {
-             apply_threads(scenario);
-             return std::make_unique<Simulation>(scenario);
-           }),
-           py::arg("scenario"))
-      .def("step", &Simulation::step_frame, py::call_guard<py::gil_scoped_release>(),
+  py::class_<SteppedSimulation>(m, "Simulation", "A scenario's cloth stepped one frame at a time")
+      .def(py::init<const Scenario&>(), py::arg("scenario"))
+      .def("step", &SteppedSimulation::step_frame, py::call_guard<py::gil_scoped_release>(),
            "Advances one frame (the scenario's substeps)")
-      .def_property_readonly("frame", &Simulation::frame)
+      .def_property_readonly("frame",
+                             [](const SteppedSimulation& s) { return s.simulation.frame(); })
       .def(
-          "arrays", [](const Simulation& s) { return arrays_dict(s.arrays()); },
+          "arrays", [](const SteppedSimulation& s) { return arrays_dict(s.simulation.arrays()); },
           "The cloth now: a dict of NumPy arrays named as in frames.h5");
 
   m.def(
       "run",
       [](const Scenario& scenario, const std::filesystem::path& out, std::optional<int> frames,
          std::function<void(py::dict)> on_frame) {
-        apply_threads(scenario);
+        ThreadChoice threads(scenario);
         RunOptions options;
         options.output_dir = out;
         options.frames = frames;
-        if (on_frame) {
-          options.on_frame = [&on_frame](const FrameStats& row) {
+        options.on_frame = [&on_frame, &threads](const FrameStats& row) {
+          threads.before_frame(row.particles);
+          if (on_frame) {
             py::gil_scoped_acquire gil;
             py::dict stats;
             for (const StatsColumn& c : stats_columns(row)) stats[c.name] = c.value;
             on_frame(stats);
-          };
-        }
+          }
+        };
         RunResult result;
         {
           py::gil_scoped_release released;

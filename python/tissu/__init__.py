@@ -15,6 +15,15 @@ refused, tissu.SimulationError for a step that diverges, OSError for a file not 
 docs/python.md has the whole API.
 """
 import json as _json
+import os as _os
+
+# libgomp's spin count, as the tissu programs set it (apps/openmp_waiting.hpp): an idle OpenMP
+# thread spins about 0.1 ms, then sleeps, instead of spinning for milliseconds on cores that other
+# processes (a sweep's other runs) need. libgomp reads it once, when it is loaded: set before
+# _tissu loads it, and without effect if another module loaded libgomp first. A policy the user
+# chose is kept.
+if "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ:
+    _os.environ["GOMP_SPINCOUNT"] = "10000"
 
 from ._tissu import Scenario, Simulation, SimulationError  # noqa: F401
 from . import _tissu

@@ -8,6 +8,10 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <cstdlib>
+#include <optional>
+#include <string>
+
 namespace tissu {
 namespace {
 
@@ -23,6 +27,21 @@ TEST(ThreadsForParticles, OneThreadPerBlockOfParticlesWithinTheAvailableThreads)
   EXPECT_EQ(threads_for_particles(1000000, 1), 1);
   EXPECT_EQ(threads_for_particles(5000, 0), 1);
   EXPECT_EQ(threads_for_particles(10 * min_particles_per_thread, 4), 4);  // always at least one
+}
+
+TEST(UserChoseThreads, ByTheScenarioOrByOmpNumThreads) {
+  const char* outer = std::getenv("OMP_NUM_THREADS");
+  const std::optional<std::string> saved = outer ? std::optional<std::string>(outer) : std::nullopt;
+  unsetenv("OMP_NUM_THREADS");
+  EXPECT_FALSE(user_chose_threads(0));  // 0: the programs choose
+  EXPECT_TRUE(user_chose_threads(1));
+  EXPECT_TRUE(user_chose_threads(3));
+  setenv("OMP_NUM_THREADS", "2", 1);
+  EXPECT_TRUE(user_chose_threads(0));
+  if (saved)
+    setenv("OMP_NUM_THREADS", saved->c_str(), 1);
+  else
+    unsetenv("OMP_NUM_THREADS");
 }
 
 TEST(CoresUsedByOthers, IsTheBusyTimeNotSpentByThisProcessPerSecond) {

@@ -96,6 +96,34 @@ class MatchesTheCommandLine(unittest.TestCase):
         self.assertGreater(ticks, 100000)  # about 2 million released, 2 to 20 thousand held
 
 
+class ChoosesThreadsAsTheCommandLine(unittest.TestCase):
+    def test_a_small_cloth_runs_on_one_thread_unless_the_scenario_says(self):
+        # 25 particles: a second thread costs more than it saves (lib/thread_count.hpp), whatever
+        # the machine's load; without a choice, OpenMP would give it every core
+        chosen = []
+        tissu.run(tissu.load_scenario(TINY, overrides={"render.enabled": False}),
+                  out=fresh("threads_chosen"), on_frame=lambda row: chosen.append(row["threads"]))
+        self.assertEqual(chosen, [0, 1, 1, 1])  # frame 0 has no steps
+        given = []
+        tissu.run(tissu.load_scenario(TINY, overrides={"render.enabled": False, "simulation.threads": 3}),
+                  out=fresh("threads_given"), on_frame=lambda row: given.append(row["threads"]))
+        self.assertEqual(given, [0, 3, 3, 3])
+
+    def test_importing_sets_a_short_spin_unless_the_user_chose_a_policy(self):
+        def spin_count_after_import(**policy):
+            env = {k: v for k, v in os.environ.items()
+                   if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+            env.update(policy)
+            return subprocess.run(
+                [sys.executable, "-c",
+                 "import os, tissu; print(os.environ.get('GOMP_SPINCOUNT'))"],
+                env=env, check=True, capture_output=True, text=True).stdout.strip()
+
+        self.assertEqual(spin_count_after_import(), "10000")
+        self.assertEqual(spin_count_after_import(OMP_WAIT_POLICY="passive"), "None")
+        self.assertEqual(spin_count_after_import(GOMP_SPINCOUNT="5"), "5")
+
+
 class RaisesTheCommandLinesErrors(unittest.TestCase):
     def test_a_bad_key_is_a_value_error_naming_it(self):
         with self.assertRaises(ValueError) as caught:
