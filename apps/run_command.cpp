@@ -126,8 +126,8 @@ int execute(const RunCommand& command) {
   std::filesystem::path output_dir;
   bool folder_taken = false;  // run.json goes only into a folder this run has cleared
   RunEnd end{1, "error", ""};
-  // made before the scenario loads, so that the first measurement of the other processes can
-  // count the set-up's time rather than wait for its own (lib/thread_count.hpp)
+  // counts the other processes' threads ready to run, then measures their use over the run
+  // (lib/thread_count.hpp)
   FrameThreadChooser thread_chooser(omp_get_max_threads());
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
@@ -136,6 +136,9 @@ int execute(const RunCommand& command) {
     // the process's thread count is the program's to set, not the library's
     if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
     record.threads = omp_get_max_threads();
+    // the set-up (building and compiling the cloth) on the cores other processes leave idle; the
+    // frames' steps on as many as the cloth's size also pays for (run_loaded)
+    if (!user_chose_threads(scenario.threads)) omp_set_num_threads(thread_chooser.idle_threads());
     record.frames = command.frames.value_or(scenario.frames);
     output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                             : std::filesystem::path(command.output_dir);

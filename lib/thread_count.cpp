@@ -73,28 +73,38 @@ int threads_beside_others(double others_cores, int cores) {
   return std::max(1, static_cast<int>(std::lround(static_cast<double>(cores) - others_cores)));
 }
 
-FrameThreadChooser::FrameThreadChooser(int available_threads, double min_window_s,
-                                       double first_window_s)
+std::optional<int> others_ready_to_run(int samples, double gap_s) {
+  std::optional<int> fewest;
+  for (int k = 0; k < samples; ++k) {
+    if (k > 0) std::this_thread::sleep_for(std::chrono::duration<double>(gap_s));
+    std::ifstream stat("/proc/stat");
+    std::string name;
+    int running = 0;
+    while (stat >> name && name != "procs_running") stat.ignore(1 << 20, '\n');
+    if (!(stat >> running)) return std::nullopt;
+    fewest = std::min(fewest.value_or(running), running);
+  }
+  if (!fewest) return std::nullopt;
+  return std::max(0, *fewest - 1);  // the reading thread is running
+}
+
+FrameThreadChooser::FrameThreadChooser(int available_threads, double min_window_s)
     : m_available_threads(std::max(1, available_threads)),
       m_min_window_s(min_window_s),
-      m_first_window_s(first_window_s),
       m_window_start(sample_cpu_times()),
-      m_idle_cores(m_available_threads) {}
+      m_idle_cores(m_available_threads) {
+  const std::optional<int> others = others_ready_to_run();
+  if (m_window_start && others)
+    m_idle_cores = threads_beside_others(*others, m_window_start->cores);
+}
 
 int FrameThreadChooser::threads(int particles) {
   const int wanted = threads_for_particles(particles, m_available_threads);
   if (m_window_start) {
-    std::optional<CpuTimeSample> now = sample_cpu_times();
-    const bool first_threads = !m_measured && wanted > 1;
-    if (now && first_threads && now->wall_s - m_window_start->wall_s < m_first_window_s) {
-      const double wait_s = m_first_window_s - (now->wall_s - m_window_start->wall_s);
-      std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
-      now = sample_cpu_times();
-    }
-    if (now && (first_threads || now->wall_s - m_window_start->wall_s >= m_min_window_s)) {
+    const std::optional<CpuTimeSample> now = sample_cpu_times();
+    if (now && now->wall_s - m_window_start->wall_s >= m_min_window_s) {
       m_idle_cores = threads_beside_others(cores_used_by_others(*m_window_start, *now), now->cores);
       m_window_start = now;
-      m_measured = true;
     }
   }
   return std::min(wanted, m_idle_cores);

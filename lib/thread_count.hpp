@@ -42,6 +42,14 @@ std::optional<CpuTimeSample> sample_cpu_times();
 /// (Δ cores_busy_s − Δ this_process_s) / Δ wall_s, at least 0.
 double cores_used_by_others(const CpuTimeSample& earlier, const CpuTimeSample& later);
 
+/// Threads of other processes ready to run at this instant: the fewest of `samples` readings of
+/// /proc/stat's procs_running, `gap_s` apart, less the reading thread. The fewest, since one
+/// reading may catch a short wake-up (or this process's OpenMP threads still spinning), while a
+/// busy process is in every one. Counts the runnable threads of every core, not only this
+/// process's: where its affinity mask leaves some out, it errs towards fewer threads. nullopt
+/// where /proc/stat cannot be read.
+std::optional<int> others_ready_to_run(int samples = 8, double gap_s = 0.25e-3);
+
 /// Threads that do not share a core with the other processes' work: the cores left idle, rounded
 /// to the nearest, at least 1. A busy process beside two threads of ours on two cores is measured
 /// at about 2/3 of a core (three threads share two cores), which still leaves one thread.
@@ -53,26 +61,26 @@ int threads_beside_others(double others_cores, int cores);
 /// loop wait for its slowest thread: beside one busy process on two cores, two threads ran 7 to
 /// 69 % slower than one (docs/benchmarks.md, "Threads beside a busy process").
 ///
-/// The first cloth large enough for threads is not given them unmeasured: the chooser waits, if
-/// need be, until `first_window_s` has passed since its construction and measures then. A first
-/// step from rest can be the run's longest (the hanging sheet's took 0.5 s of a 2.2 s run), and
-/// taken on two threads beside a busy process it made the whole run 1.5 times slower than one
-/// thread (docs/benchmarks.md, "2026-12-07").
+/// Until its first window has passed, it counts the other processes' threads ready to run when it
+/// is made (others_ready_to_run()), so that the first frames, whose first step from rest can be
+/// the run's longest, are neither given threads unmeasured nor wait for a measurement: beside a
+/// busy process, two threads for the first step made a 2.2 s run 1.5 times slower than one
+/// thread, and waiting 0.1 s to measure made it 0.08 s slower (docs/benchmarks.md, "2026-12-07").
 class FrameThreadChooser {
  public:
-  explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25,
-                              double first_window_s = 0.1);
+  explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25);
 
   /// The threads for the next frame of a cloth of `particles` particles.
   int threads(int particles);
 
+  /// The threads for work of any size (a cloth's set-up): the idle cores as last measured.
+  int idle_threads() const { return std::min(m_available_threads, m_idle_cores); }
+
  private:
   int m_available_threads;
   double m_min_window_s;
-  double m_first_window_s;
   std::optional<CpuTimeSample> m_window_start;
-  bool m_measured = false;
-  int m_idle_cores;  ///< as last measured; m_available_threads before any measurement
+  int m_idle_cores;  ///< as last measured; m_available_threads where nothing can be measured
 };
 
 }  // namespace tissu

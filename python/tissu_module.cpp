@@ -75,6 +75,7 @@ class ThreadChoice {
         // the cores, not omp_get_max_threads(): an earlier run's choice may have lowered that
         m_chooser(omp_get_num_procs()) {
     if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
+    if (!m_user_chose) omp_set_num_threads(m_chooser.idle_threads());  // for the set-up
   }
 
   void before_frame(int particles) {

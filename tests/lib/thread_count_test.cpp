@@ -93,17 +93,20 @@ TEST(FrameThreadChooser, LeavesACoreToABusyProcess) {
   EXPECT_LE(threads, std::max(1, start->cores - 1)) << "cores: " << start->cores;
 }
 
-TEST(FrameThreadChooser, MeasuresTheOtherProcessesBeforeItFirstGivesThreads) {
+TEST(FrameThreadChooser, CountsTheOtherProcessesReadyToRunBeforeItsFirstWindow) {
   const std::optional<CpuTimeSample> start = sample_cpu_times();
   ASSERT_TRUE(start.has_value()) << "/proc/stat unreadable: this test needs Linux";
-  const pid_t child = spin_in_child(0.6);
+  const pid_t child = spin_in_child(0.3);
   ASSERT_GT(child, 0);
-  // asked at once, before its first window has passed: it waits out 0.15 s and measures
-  FrameThreadChooser chooser(start->cores, 10.0, 0.15);
+  const std::optional<int> others = others_ready_to_run();
+  // asked at once, its first window (10 s) far from over: it counts the busy child
+  FrameThreadChooser chooser(start->cores, 10.0);
   const int threads = chooser.threads(1000000);
   int child_status = 0;
   waitpid(child, &child_status, 0);
 
+  ASSERT_TRUE(others.has_value());
+  EXPECT_GE(*others, 1);
   EXPECT_LE(threads, std::max(1, start->cores - 1)) << "cores: " << start->cores;
 }
 
