@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "solver/parallel.hpp"

@@ -7,6 +7,7 @@
 #include "solver/forces/spring_coupling.hpp"
 #include "solver/forces/spring_force.hpp"
 #include "solver/integrators/step_minimisation.hpp"
+#include "solver/parallel.hpp"
 #include "solver/parallel_sum.hpp"
 
 namespace tissu {
@@ -116,30 +117,43 @@ int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled,
                         MinimisationWorkspace& common, NewtonWorkspace& newton, double forcing_term,
                         int max_iterations) {
   const Eigen::Index dofs = common.gradient.size();
+  const int particles = static_cast<int>(dofs / 3);
   newton.correction.setZero(dofs);
   newton.residual = -common.gradient;
   precondition(preconditioner, common, newton);
   newton.search = common.preconditioned;
-  double rz = newton.residual.dot(common.preconditioned);
-  const double target_n = forcing_term * common.gradient.norm();
+  double rz = particle_dot(newton.residual, common.preconditioned);
+  const double target_n = forcing_term * particle_norm(common.gradient);
+  double residual_n = particle_norm(newton.residual);
   int iteration = 0;
-  while (iteration < max_iterations && newton.residual.norm() > target_n) {
+  while (iteration < max_iterations && residual_n > target_n) {
     if (coupled) {
       newton.hessian_search.noalias() = newton.coupled_hessian * newton.search;
     } else {
       symmetric_block_product(newton.hessian, newton.search, newton.hessian_search);
     }
-    const double curvature = newton.search.dot(newton.hessian_search);
+    const double curvature = particle_dot(newton.search, newton.hessian_search);
     if (!(curvature > 0.0)) {
       if (iteration == 0) newton.correction = newton.search;
       break;
     }
     const double step = rz / curvature;
-    newton.correction += step * newton.search;
-    newton.residual -= step * newton.hessian_search;
+    // correction += step p, residual -= step H p, and |residual|, in one pass
+    residual_n = std::sqrt(chunked_sum(particles, [&](int begin, int end) {
+      const Eigen::Index start = 3 * begin, size = 3 * (end - begin);
+      newton.correction.segment(start, size) += step * newton.search.segment(start, size);
+      auto residual = newton.residual.segment(start, size);
+      residual -= step * newton.hessian_search.segment(start, size);
+      return residual.squaredNorm();
+    }));
     precondition(preconditioner, common, newton);
-    const double rz_next = newton.residual.dot(common.preconditioned);
-    newton.search = common.preconditioned + (rz_next / rz) * newton.search;
+    const double rz_next = particle_dot(newton.residual, common.preconditioned);
+    const double beta = rz_next / rz;
+#pragma omp parallel for schedule(static) if (particles >= min_parallel_items)
+    for (int p = 0; p < particles; ++p) {
+      newton.search.segment<3>(3 * p) =
+          common.preconditioned.segment<3>(3 * p) + beta * newton.search.segment<3>(3 * p);
+    }
     rz = rz_next;
     ++iteration;
   }
@@ -154,7 +168,7 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
   check_options(options);
   const bool pd_preconditioner = options.preconditioner == NewtonPreconditioner::pd_matrix;
   const double force_scale_n = step_force_scale(model, potential);
-  const double first_gradient_n = common.gradient.norm();
+  const double first_gradient_n = particle_norm(common.gradient);
   const double reduced_from_n =
       gradient_reduction_reference(first_gradient_n, options.tolerance, force_scale_n);
 
@@ -164,9 +178,9 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
   while (!converged && newton.iterations < options.max_iterations) {
     assemble_hessian(model, potential, common.x, common.potential, newton);
     if (!pd_preconditioner) newton.multigrid.set_operator(newton.hessian, model.identity);
-    const double forcing_term = std::min(
-        max_forcing_term,
-        std::sqrt(relative_residual(common.gradient.norm(), force_scale_n, first_gradient_n)));
+    const double forcing_term =
+        std::min(max_forcing_term, std::sqrt(relative_residual(particle_norm(common.gradient),
+                                                               force_scale_n, first_gradient_n)));
     newton.cg_iterations +=
         solve_newton_system(options.preconditioner, model.couplings.rows() > 0, common, newton,
                             forcing_term, options.cg_max_iterations);
@@ -181,7 +195,7 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
     newton.correction_ratio =
         relative_correction(model, potential.time_step_s, newton.correction, common.trial_x,
                             start_x, common.external_force, 1.0);
-    newton.gradient_ratio = common.trial_gradient.norm() / reduced_from_n;
+    newton.gradient_ratio = particle_norm(common.trial_gradient) / reduced_from_n;
     converged = minimiser_converged(newton.correction_ratio, options.tolerance,
                                     newton.gradient_ratio, options.gradient_reduction);
     common.x.swap(common.trial_x);

@@ -103,6 +103,31 @@ void jacobi_correction(const MultigridLevel& level, const Eigen::VectorXd& r, Ei
   }
 }
 
+// x = omega D^-1 r: the sweep from x = 0
+void jacobi_from_zero(const MultigridLevel& level, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+  const int nodes = static_cast<int>(x.size() / 3);
+#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
+  for (int i = 0; i < nodes; ++i) {
+    x.segment<3>(3 * i) =
+        jacobi_damping * (level.diagonal_inverse.block<3, 3>(0, 3 * i) * r.segment<3>(3 * i));
+  }
+}
+
+// each aggregate's nodes in node order (a counting sort of `aggregate`), so that the restriction
+// can sum an aggregate's residuals in one thread, in the order a serial scatter would add them
+void list_members(const std::vector<int>& aggregate, int aggregates, MultigridLevel& level) {
+  level.member_start.assign(aggregates + 1, 0);
+  for (int a : aggregate) {
+    if (a >= 0) ++level.member_start[a + 1];
+  }
+  for (int a = 0; a < aggregates; ++a) level.member_start[a + 1] += level.member_start[a];
+  level.members.resize(level.member_start[aggregates]);
+  std::vector<int> next(level.member_start.begin(), level.member_start.end() - 1);
+  for (int i = 0; i < static_cast<int>(aggregate.size()); ++i) {
+    if (aggregate[i] >= 0) level.members[next[aggregate[i]]++] = i;
+  }
+}
+
 // the inverse of each node's diagonal block
 void invert_diagonal_blocks(const SymmetricBlockMatrix& matrix, Eigen::Matrix3Xd& inverse) {
   const int nodes = matrix.node_count();
@@ -128,6 +153,7 @@ void AggregationMultigrid::set_operator(const SymmetricBlockMatrix& finest,
       MultigridLevel& fine = m_levels[index];
       const int coarse_nodes = aggregate_nodes(matrix(index), fine.aggregate);
       if (coarse_nodes == 0 || coarse_nodes * 5 > nodes * 4) break;  // no longer coarsening
+      list_members(fine.aggregate, coarse_nodes, fine);
       MultigridLevel coarse;
       build_summed_pattern(matrix(index), nullptr, &fine.aggregate, nodes, false, fine.prolongated,
                            fine.prolongated_block);
@@ -137,6 +163,8 @@ void AggregationMultigrid::set_operator(const SymmetricBlockMatrix& finest,
       m_levels.push_back(std::move(coarse));
     }
     m_levels.back().aggregate.clear();
+    m_levels.back().member_start.clear();
+    m_levels.back().members.clear();
     m_levels.back().prolongated = SymmetricBlockMatrix{};
   }
   for (int index = 0; index < static_cast<int>(m_levels.size()); ++index) {
@@ -163,18 +191,22 @@ void AggregationMultigrid::cycle(int index) {
     return;
   }
   // pre-smoothing from x = 0: x = omega D^-1 b, and r = b - A x
-  level.solution.setZero();
-  jacobi_correction(level, level.right_side, level.solution);
+  jacobi_from_zero(level, level.right_side, level.solution);
   symmetric_block_residual(matrix(index), level.right_side, level.solution, level.residual);
+  // r_c = P^T r: each aggregate's residuals summed
   MultigridLevel& coarse = m_levels[index + 1];
-  coarse.right_side.setZero();
-  const int nodes = static_cast<int>(level.right_side.size() / 3);
-  for (int i = 0; i < nodes; ++i) {
-    const int a = level.aggregate[i];
-    if (a >= 0) coarse.right_side.segment<3>(3 * a) += level.residual.segment<3>(3 * i);
+  const int coarse_nodes = static_cast<int>(coarse.right_side.size() / 3);
+#pragma omp parallel for schedule(static) if (coarse_nodes >= min_parallel_items)
+  for (int a = 0; a < coarse_nodes; ++a) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int k = level.member_start[a]; k < level.member_start[a + 1]; ++k)
+      sum += level.residual.segment<3>(3 * level.members[k]);
+    coarse.right_side.segment<3>(3 * a) = sum;
   }
   cycle(index + 1);
   // x += P e and r -= (A P) e: the residual at the corrected x without a product by A
+  const int nodes = static_cast<int>(level.right_side.size() / 3);
+#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
   for (int i = 0; i < nodes; ++i) {
     const int a = level.aggregate[i];
     if (a >= 0) level.solution.segment<3>(3 * i) += coarse.solution.segment<3>(3 * a);
