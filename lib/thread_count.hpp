@@ -65,7 +65,8 @@ int threads_beside_others(double others_cores, int cores);
 /// is made (others_ready_to_run()), so that the first frames, whose first step from rest can be
 /// the run's longest, are neither given threads unmeasured nor wait for a measurement: beside a
 /// busy process, two threads for the first step made a 2.2 s run 1.5 times slower than one
-/// thread, and waiting 0.1 s to measure made it 0.08 s slower (docs/benchmarks.md, "2026-12-07").
+/// thread, and waiting 0.1 s to measure made a one-frame run 0.07 s slower (docs/benchmarks.md,
+/// "2026-12-07").
 class FrameThreadChooser {
  public:
   explicit FrameThreadChooser(int available_threads, double min_window_s = 0.25);
