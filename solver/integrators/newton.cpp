@@ -110,12 +110,12 @@ void precondition(NewtonPreconditioner preconditioner, MinimisationWorkspace& co
 }
 
 // correction ~ -H^-1 gradient by the preconditioned conjugate gradient from 0, to a residual of
-// forcing_term |gradient|; returns the iterations. Stops at a direction of non-positive
-// curvature (H is positive definite up to the couplings' cross terms), keeping what it has, or
-// the preconditioned gradient if that is nothing yet.
+// forcing_term |gradient| (gradient_n: |gradient|, N); returns the iterations. Stops at a direction
+// of non-positive curvature (H is positive definite up to the couplings' cross terms), keeping what
+// it has, or the preconditioned gradient if that is nothing yet.
 int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled,
-                        MinimisationWorkspace& common, NewtonWorkspace& newton, double forcing_term,
-                        int max_iterations) {
+                        MinimisationWorkspace& common, NewtonWorkspace& newton, double gradient_n,
+                        double forcing_term, int max_iterations) {
   const Eigen::Index dofs = common.gradient.size();
   const int particles = static_cast<int>(dofs / 3);
   newton.correction.setZero(dofs);
@@ -123,8 +123,8 @@ int solve_newton_system(NewtonPreconditioner preconditioner, bool coupled,
   precondition(preconditioner, common, newton);
   newton.search = common.preconditioned;
   double rz = particle_dot(newton.residual, common.preconditioned);
-  const double target_n = forcing_term * particle_norm(common.gradient);
-  double residual_n = particle_norm(newton.residual);
+  const double target_n = forcing_term * gradient_n;
+  double residual_n = gradient_n;  // the residual is -gradient
   int iteration = 0;
   while (iteration < max_iterations && residual_n > target_n) {
     if (coupled) {
@@ -174,16 +174,17 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
 
   newton.iterations = 0;
   newton.cg_iterations = 0;
+  double gradient_n = first_gradient_n;  // |grad E| at common.x (N)
   bool converged = first_gradient_n == 0.0;
   while (!converged && newton.iterations < options.max_iterations) {
     assemble_hessian(model, potential, common.x, common.potential, newton);
     if (!pd_preconditioner) newton.multigrid.set_operator(newton.hessian, model.identity);
     const double forcing_term =
-        std::min(max_forcing_term, std::sqrt(relative_residual(particle_norm(common.gradient),
-                                                               force_scale_n, first_gradient_n)));
+        std::min(max_forcing_term,
+                 std::sqrt(relative_residual(gradient_n, force_scale_n, first_gradient_n)));
     newton.cg_iterations +=
         solve_newton_system(options.preconditioner, model.couplings.rows() > 0, common, newton,
-                            forcing_term, options.cg_max_iterations);
+                            gradient_n, forcing_term, options.cg_max_iterations);
     double trial_energy_j = energy_j;
     const double slope_j = particle_dot(common.gradient, newton.correction);
     if (!backtracking_line_search(model, potential, common.x, slope_j, energy_j, newton.correction,
@@ -195,11 +196,13 @@ bool newton_iterations(const SpringModel& model, const NewtonOptions& options,
     newton.correction_ratio =
         relative_correction(model, potential.time_step_s, newton.correction, common.trial_x,
                             start_x, common.external_force, 1.0);
-    newton.gradient_ratio = particle_norm(common.trial_gradient) / reduced_from_n;
+    const double trial_gradient_n = particle_norm(common.trial_gradient);
+    newton.gradient_ratio = trial_gradient_n / reduced_from_n;
     converged = minimiser_converged(newton.correction_ratio, options.tolerance,
                                     newton.gradient_ratio, options.gradient_reduction);
     common.x.swap(common.trial_x);
     common.gradient.swap(common.trial_gradient);
+    gradient_n = trial_gradient_n;
     energy_j = trial_energy_j;
   }
   return converged;

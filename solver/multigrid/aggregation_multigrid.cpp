@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "solver/group_by_label.hpp"
 #include "solver/multigrid/greedy_aggregation.hpp"
 #include "solver/parallel.hpp"
 
@@ -113,21 +114,6 @@ void jacobi_from_zero(const MultigridLevel& level, const Eigen::VectorXd& r, Eig
   }
 }
 
-// each aggregate's nodes in node order (a counting sort of `aggregate`), so that the restriction
-// can sum an aggregate's residuals in one thread, in the order a serial scatter would add them
-void list_members(const std::vector<int>& aggregate, int aggregates, MultigridLevel& level) {
-  level.member_start.assign(aggregates + 1, 0);
-  for (int a : aggregate) {
-    if (a >= 0) ++level.member_start[a + 1];
-  }
-  for (int a = 0; a < aggregates; ++a) level.member_start[a + 1] += level.member_start[a];
-  level.members.resize(level.member_start[aggregates]);
-  std::vector<int> next(level.member_start.begin(), level.member_start.end() - 1);
-  for (int i = 0; i < static_cast<int>(aggregate.size()); ++i) {
-    if (aggregate[i] >= 0) level.members[next[aggregate[i]]++] = i;
-  }
-}
-
 // the inverse of each node's diagonal block
 void invert_diagonal_blocks(const SymmetricBlockMatrix& matrix, Eigen::Matrix3Xd& inverse) {
   const int nodes = matrix.node_count();
@@ -153,7 +139,9 @@ void AggregationMultigrid::set_operator(const SymmetricBlockMatrix& finest,
       MultigridLevel& fine = m_levels[index];
       const int coarse_nodes = aggregate_nodes(matrix(index), fine.aggregate);
       if (coarse_nodes == 0 || coarse_nodes * 5 > nodes * 4) break;  // no longer coarsening
-      list_members(fine.aggregate, coarse_nodes, fine);
+      // each aggregate's nodes in node order: the restriction sums them in the order a serial
+      // scatter would add them
+      group_by_label(fine.aggregate, coarse_nodes, fine.member_start, fine.members);
       MultigridLevel coarse;
       build_summed_pattern(matrix(index), nullptr, &fine.aggregate, nodes, false, fine.prolongated,
                            fine.prolongated_block);

@@ -24,11 +24,10 @@ namespace tissu {
 /// One level of the hierarchy: its operator (3n x 3n), the map of its nodes to the next level's
 /// and the inverses of its 3x3 diagonal blocks.
 struct MultigridLevel {
-  SymmetricBlockMatrix matrix;  ///< 3n x 3n, levels 1 and up (level 0: A)
-  std::vector<int> aggregate;   ///< n: node of the next level it belongs to, -1 for none
-  std::vector<int>
-      member_start;          ///< n_c + 1: aggregate a's nodes are members[start[a], start[a + 1])
-  std::vector<int> members;  ///< the aggregated nodes by aggregate, each in node order
+  SymmetricBlockMatrix matrix;         ///< 3n x 3n, levels 1 and up (level 0: A)
+  std::vector<int> aggregate;          ///< n: node of the next level it belongs to, -1 for none
+  std::vector<int> member_start;       ///< n_c + 1: aggregate a's nodes in `members` (offsets)
+  std::vector<int> members;            ///< the aggregated nodes by aggregate, each in node order
   SymmetricBlockMatrix prolongated;    ///< A P, n x n_c: block (i, a) sums A_ij over j in a
   std::vector<int> prolongated_block;  ///< #blocks of A: block of A P each adds to (-1: none)
   std::vector<int> coarse_block;       ///< #blocks of A P: block of the next level's each adds to

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solver/group_by_label.hpp"
+
 namespace tissu {
 
 void color_particles(const std::vector<int>& offsets, const std::vector<int>& neighbours,
@@ -24,13 +26,7 @@ void color_particles(const std::vector<int>& offsets, const std::vector<int>& ne
     }
     coloring.color[p] = c;
   }
-  // counting sort by colour, ascending ids within a colour
-  coloring.color_offsets.assign(colors + 1, 0);
-  for (int p = 0; p < particles; ++p) ++coloring.color_offsets[coloring.color[p] + 1];
-  for (int c = 0; c < colors; ++c) coloring.color_offsets[c + 1] += coloring.color_offsets[c];
-  coloring.order.resize(particles);
-  marks.assign(coloring.color_offsets.begin(), coloring.color_offsets.end() - 1);
-  for (int p = 0; p < particles; ++p) coloring.order[marks[coloring.color[p]]++] = p;
+  group_by_label(coloring.color, colors, coloring.color_offsets, coloring.order);
 }
 
 ParticleColoring color_particles(const SpringModel& model) {
