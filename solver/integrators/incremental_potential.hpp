@@ -36,23 +36,22 @@ struct StepPotential {
 
 /// Per-spring scratch of evaluate_step_potential(); meaningless between calls.
 struct StepPotentialWorkspace {
-  Eigen::VectorXd spring_energy_j;      ///< #S elastic + viscous energy of each spring (J)
   Eigen::Matrix3Xd spring_forces;       ///< 3 x #S force of each spring on its first end (N)
   Eigen::Matrix3Xd start_directions;    ///< 3 x #S u_n, filled by prepare_step_potential()
   Eigen::VectorXd start_projections_m;  ///< #S d_n . u_n (m), filled by prepare_step_potential()
   Eigen::VectorXd spring_stretch;       ///< #S |d| - l (m), with couplings only
   Eigen::VectorXd coupling_tension;     ///< #S tension the couplings add (N)
-  Eigen::VectorXd no_coupling_tension;  ///< #S zeros: the tension without couplings (N)
+  bool viscous = false;  ///< some spring has damping, so the viscous terms are evaluated
 };
 
 /// Fills what the potential keeps for the whole step: the start directions u_n and projections
-/// d_n . u_n.
+/// d_n . u_n, and whether any spring is viscous.
 void prepare_step_potential(const SpringModel& model, const StepPotential& potential,
                             StepPotentialWorkspace& workspace);
 
-/// Each spring's energy (J) into workspace.spring_energy_j and force on its first end (N) into
-/// workspace.spring_forces at x, elastic plus viscous along the start direction; returns their
-/// sum (J), added in fixed chunks (parallel_sum.hpp). Springs in parallel, in loops the compiler
+/// Each spring's force on its first end (N) into workspace.spring_forces at x, elastic plus
+/// viscous along the start direction; returns the sum of their energies (J), added in fixed chunks
+/// (parallel_sum.hpp). Springs in parallel, in loops the compiler
 /// vectorises: AVX2 where the processor has it (`kernel`, as the block products choose), else
 /// SSE2. The two round differently, so a run's bits depend on the processor, never on the number
 /// of threads. With AVX2 the potential took 1.2 to 1.75 times less than with the scalar loop
