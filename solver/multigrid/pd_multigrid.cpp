@@ -10,6 +10,7 @@ namespace tissu {
 namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+using FloatRowMatrix = Eigen::SparseMatrix<float, Eigen::RowMajor>;
 
 // Chosen on the stiff hanging sheet (docs/benchmarks.md, "quasi-Newton's initial Hessian by
 // multigrid" and "one sweep a side"): one cycle's error factor in the energy norm at 81 x 81
@@ -22,29 +23,31 @@ constexpr double smoother_damping = 0.9;  // omega of the sweeps, where rho(D^-1
 constexpr double prolongator_damping = 4.0 / 3.0;  // omega rho(D^-1 A) of the smoothed prolongator
 
 // row i of B - A X; inlined, so that the sums stay in registers
-[[gnu::always_inline]] inline Eigen::Vector3d row_residual(const RowMatrix& a,
+[[gnu::always_inline]] inline Eigen::Vector3d row_residual(const FloatRowMatrix& a,
                                                            const Eigen::Matrix3Xd& b,
                                                            const Eigen::Matrix3Xd& x, int i) {
   const int* columns = a.innerIndexPtr();
-  const double* values = a.valuePtr();
+  const float* values = a.valuePtr();
   Eigen::Vector3d sum = b.col(i);
   for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k) {
-    sum -= values[k] * x.col(columns[k]);
+    sum -= double(values[k]) * x.col(columns[k]);
   }
   return sum;
 }
 
 // Y = M X, or Y += M X when `accumulate`, column by column of the 3 x n blocks
-void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y,
+void multiply(const FloatRowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y,
               bool accumulate = false) {
   const int rows = static_cast<int>(m.rows());
   const int* offsets = m.outerIndexPtr();
   const int* columns = m.innerIndexPtr();
-  const double* values = m.valuePtr();
+  const float* values = m.valuePtr();
 #pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
   for (int i = 0; i < rows; ++i) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k) sum += values[k] * x.col(columns[k]);
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k) {
+      sum += double(values[k]) * x.col(columns[k]);
+    }
     if (accumulate) {
       y.col(i) += sum;
     } else {
@@ -54,7 +57,7 @@ void multiply(const RowMatrix& m, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& y
 }
 
 // R = B - A X
-void residual(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::Matrix3Xd& x,
+void residual(const FloatRowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::Matrix3Xd& x,
               Eigen::Matrix3Xd& r) {
   const int rows = static_cast<int>(a.rows());
 #pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
@@ -63,7 +66,7 @@ void residual(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::Matrix
 
 // one damped Jacobi sweep into another buffer, X_swept = X + S (B - A X), S = diag(omega / A_ii);
 // from X = 0 (no `x`) it is X_swept = S B
-void jacobi_sweep(const RowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::VectorXd& scale,
+void jacobi_sweep(const FloatRowMatrix& a, const Eigen::Matrix3Xd& b, const Eigen::VectorXd& scale,
                   const Eigen::Matrix3Xd* x, Eigen::Matrix3Xd& swept) {
   const int rows = static_cast<int>(a.rows());
 #pragma omp parallel for schedule(static) if (rows >= min_parallel_items)
@@ -154,6 +157,15 @@ AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<
   return coarse;
 }
 
+// the level's operator A, its Jacobi scale (from its own Gershgorin bound) and the float copy
+// the cycles read
+void set_operator(PdMultigridLevel& level, RowMatrix matrix) {
+  level.matrix = std::move(matrix);
+  const Eigen::VectorXd diagonal = level.matrix.diagonal();
+  level.jacobi_scale = jacobi_scale(diagonal, jacobi_radius_bound(level.matrix, diagonal));
+  level.cycle_matrix = level.matrix.cast<float>();
+}
+
 }  // namespace
 
 bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
@@ -161,8 +173,9 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
   m_generation = 0;
   m_levels.clear();
   m_levels.emplace_back();
-  m_levels[0].matrix = pd_free_particle_matrix(system);
-  if (!(m_levels[0].matrix.diagonal().array() > 0.0).all()) return false;
+  RowMatrix finest = pd_free_particle_matrix(system);
+  if (!(finest.diagonal().array() > 0.0).all()) return false;
+  set_operator(m_levels[0], std::move(finest));
   AggregationGraph graph = nearest_neighbour_graph(model, system);
   for (int index = 0;; ++index) {
     PdMultigridLevel& fine = m_levels[index];
@@ -170,7 +183,6 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     const int nodes = static_cast<int>(a.rows());
     const Eigen::VectorXd diagonal = a.diagonal();
     const double radius_bound = jacobi_radius_bound(a, diagonal);
-    fine.jacobi_scale = jacobi_scale(diagonal, radius_bound);
     fine.base_matrix = a;
     fine.solution.setZero(3, nodes);
     fine.residual.setZero(3, nodes);
@@ -193,12 +205,13 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     fine.prolongator = t - smoothing;
     fine.prolongator.prune(0.0);
     fine.restrictor = fine.prolongator.transpose();
+    fine.cycle_prolongator = fine.prolongator.cast<float>();
+    fine.cycle_restrictor = fine.restrictor.cast<float>();
     const RowMatrix a_p = a * fine.prolongator;
     RowMatrix coarse = fine.restrictor * a_p;
     coarse.prune(0.0);
-    PdMultigridLevel next;
-    next.matrix = std::move(coarse);
-    m_levels.push_back(std::move(next));
+    m_levels.emplace_back();
+    set_operator(m_levels.back(), std::move(coarse));
   }
   m_extra = false;
   if (!factor_coarsest()) return false;
@@ -219,20 +232,18 @@ bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
   for (std::size_t index = 0; index < m_levels.size(); ++index) {
     PdMultigridLevel& level = m_levels[index];
     if (!m_extra) {
-      level.matrix = level.base_matrix;
+      set_operator(level, level.base_matrix);
     } else if (index == 0) {
       RowMatrix d(extra.size(), extra.size());
       d.setIdentity();
       d.diagonal() = extra;
       added = d;
-      level.matrix = level.base_matrix + added;
+      set_operator(level, level.base_matrix + added);
     } else {
       const PdMultigridLevel& fine = m_levels[index - 1];
       added = RowMatrix(fine.restrictor * RowMatrix(added * fine.prolongator));
-      level.matrix = level.base_matrix + added;
+      set_operator(level, level.base_matrix + added);
     }
-    const Eigen::VectorXd diagonal = level.matrix.diagonal();
-    level.jacobi_scale = jacobi_scale(diagonal, jacobi_radius_bound(level.matrix, diagonal));
   }
   return factor_coarsest();
 }
@@ -245,17 +256,17 @@ void PdMultigrid::cycle(int index) {
   }
   // each sweep writes the residual's buffer, free until the restriction, then takes it back
   const auto sweep_again = [&] {
-    jacobi_sweep(level.matrix, level.right_side, level.jacobi_scale, &level.solution,
+    jacobi_sweep(level.cycle_matrix, level.right_side, level.jacobi_scale, &level.solution,
                  level.residual);
     level.solution.swap(level.residual);
   };
-  jacobi_sweep(level.matrix, level.right_side, level.jacobi_scale, nullptr, level.solution);
+  jacobi_sweep(level.cycle_matrix, level.right_side, level.jacobi_scale, nullptr, level.solution);
   for (int sweep = 1; sweep < sweeps; ++sweep) sweep_again();
-  residual(level.matrix, level.right_side, level.solution, level.residual);
+  residual(level.cycle_matrix, level.right_side, level.solution, level.residual);
   PdMultigridLevel& coarse = m_levels[index + 1];
-  multiply(level.restrictor, level.residual, coarse.right_side);
+  multiply(level.cycle_restrictor, level.residual, coarse.right_side);
   cycle(index + 1);
-  multiply(level.prolongator, coarse.solution, level.solution, true);  // X += P E
+  multiply(level.cycle_prolongator, coarse.solution, level.solution, true);  // X += P E
   for (int sweep = 0; sweep < sweeps; ++sweep) sweep_again();
 }
 
