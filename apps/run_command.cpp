@@ -1,6 +1,5 @@
 #include "apps/run_command.hpp"
 
-#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -62,8 +61,8 @@ struct RunEnd {
 };
 
 RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
-                  const std::filesystem::path& output_dir, StopRequest stop,
-                  FrameThreadChooser& thread_chooser, RunRecord& record, bool& folder_taken) {
+                  const std::filesystem::path& output_dir, StopRequest stop, RunThreads& threads,
+                  RunRecord& record, bool& folder_taken) {
   RunOptions options;
   options.output_dir = output_dir;
   options.on_folder_taken = [&folder_taken] { folder_taken = true; };
@@ -72,10 +71,8 @@ RunEnd run_loaded(const RunCommand& command, const Scenario& scenario,
   ProgressReporter progress = stderr_progress();
   // threads from the cloth's size (it changes with refinement and tearing) and the cores other
   // processes leave idle, at every frame, unless the scenario or OMP_NUM_THREADS chose them
-  // (lib/thread_count.hpp)
-  const bool threads_chosen = user_chose_threads(scenario.threads);
-  options.on_frame = [&, threads_chosen](const FrameStats& row) {
-    if (!threads_chosen) omp_set_num_threads(thread_chooser.threads(row.particles));
+  options.on_frame = [&](const FrameStats& row) {
+    threads.before_frame(row.particles);
     if (!command.quiet) progress(row);
   };
   if (!command.quiet) {
@@ -128,21 +125,20 @@ int execute(const RunCommand& command) {
   RunEnd end{1, "error", ""};
   // counts the other processes' threads ready to run, then measures their use over the run
   // (lib/thread_count.hpp)
-  FrameThreadChooser thread_chooser(omp_get_max_threads());
+  RunThreads threads;
   try {
     const Scenario scenario = load_scenario(command.scenario, command.overrides);
     for (const std::string& note : scenario.notes)
       std::fprintf(stderr, "tissu: note: %s\n", note.c_str());
-    // the process's thread count is the program's to set, not the library's
-    if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
-    record.threads = omp_get_max_threads();
-    // the set-up (building and compiling the cloth) on the cores other processes leave idle; the
-    // frames' steps on as many as the cloth's size also pays for (run_loaded)
-    if (!user_chose_threads(scenario.threads)) omp_set_num_threads(thread_chooser.idle_threads());
+    // the process's thread count is the program's to set, not the library's: the set-up
+    // (building and compiling the cloth) on the cores other processes leave idle, the frames'
+    // steps on as many as the cloth's size also pays for (run_loaded)
+    threads.before_setup(scenario.threads);
+    record.threads = threads.most_threads();
     record.frames = command.frames.value_or(scenario.frames);
     output_dir = command.output_dir.empty() ? std::filesystem::path("out") / scenario.name
                                             : std::filesystem::path(command.output_dir);
-    end = run_loaded(command, scenario, output_dir, stop, thread_chooser, record, folder_taken);
+    end = run_loaded(command, scenario, output_dir, stop, threads, record, folder_taken);
   } catch (const ScenarioError& e) {
     end.message = e.what();
   } catch (const MeshError& e) {

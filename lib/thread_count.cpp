@@ -1,5 +1,6 @@
 #include "lib/thread_count.hpp"
 
+#include <omp.h>
 #include <sched.h>
 #include <time.h>
 #include <unistd.h>
@@ -108,6 +109,21 @@ int FrameThreadChooser::threads(int particles) {
     }
   }
   return std::min(wanted, m_idle_cores);
+}
+
+// the cores (omp_get_num_procs(), not omp_get_max_threads(): an earlier run's choice in the same
+// process may have lowered that)
+RunThreads::RunThreads() : m_chooser(omp_get_num_procs()) {}
+
+void RunThreads::before_setup(int scenario_threads) {
+  if (scenario_threads > 0) omp_set_num_threads(scenario_threads);
+  m_user_chose = user_chose_threads(scenario_threads);
+  m_most_threads = m_user_chose ? omp_get_max_threads() : omp_get_num_procs();
+  if (!m_user_chose) omp_set_num_threads(m_chooser.idle_threads());
+}
+
+void RunThreads::before_frame(int particles) {
+  if (!m_user_chose) omp_set_num_threads(m_chooser.threads(particles));
 }
 
 }  // namespace tissu

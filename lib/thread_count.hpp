@@ -84,4 +84,30 @@ class FrameThreadChooser {
   int m_idle_cores;  ///< as last measured; m_available_threads where nothing can be measured
 };
 
+/// The thread rule of the programs that run scenarios (`tissu run`, the Python module), in one
+/// place: the scenario's `threads` where it sets them, OMP_NUM_THREADS where that is set;
+/// otherwise the set-up on the cores other processes leave idle and each frame on as many as the
+/// cloth's size also pays for (FrameThreadChooser). Sets the process's OpenMP threads.
+class RunThreads {
+ public:
+  /// Starts measuring the other processes: make it before the scenario loads, so that the first
+  /// measurement window starts early.
+  RunThreads();
+
+  /// Sets the threads for the set-up of a scenario whose `threads` is `scenario_threads`.
+  void before_setup(int scenario_threads);
+
+  /// Sets the threads for the next frame of a cloth of `particles` particles.
+  void before_frame(int particles);
+
+  /// The most threads a frame may run on: the scenario's threads, OMP_NUM_THREADS or the cores
+  /// (valid after before_setup()).
+  int most_threads() const { return m_most_threads; }
+
+ private:
+  FrameThreadChooser m_chooser;
+  bool m_user_chose = false;
+  int m_most_threads = 0;
+};
+
 }  // namespace tissu

@@ -4,7 +4,6 @@
 // messages: a scenario, mesh or pin refused is a ValueError, a step that diverges a
 // tissu.SimulationError, a file the disk refuses an OSError. The GIL is released while stepping.
 
-#include <omp.h>
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -64,39 +63,26 @@ py::dict arrays_dict(const FrameArrays& a) {
   return d;
 }
 
-/// The calling thread's OpenMP thread count, as `tissu run` sets it: the scenario's `threads` or
-/// OMP_NUM_THREADS if the user gave one, otherwise chosen before every frame from the cloth's size
-/// and the cores other processes leave idle (lib/thread_count.hpp), so that runs side by side (a
-/// parameter sweep) do not share cores. Results do not depend on it.
-class ThreadChoice {
- public:
-  explicit ThreadChoice(const Scenario& scenario)
-      : m_user_chose(user_chose_threads(scenario.threads)),
-        // the cores, not omp_get_max_threads(): an earlier run's choice may have lowered that
-        m_chooser(omp_get_num_procs()) {
-    if (scenario.threads > 0) omp_set_num_threads(scenario.threads);
-    if (!m_user_chose) omp_set_num_threads(m_chooser.idle_threads());  // for the set-up
-  }
-
-  void before_frame(int particles) {
-    if (!m_user_chose) omp_set_num_threads(m_chooser.threads(particles));
-  }
-
- private:
-  bool m_user_chose;
-  FrameThreadChooser m_chooser;
-};
+// the process's OpenMP threads set for a scenario's set-up, as `tissu run` sets them, then chosen
+// before every frame (lib/thread_count.hpp), so that runs side by side (a parameter sweep) do not
+// share cores; results do not depend on them
+RunThreads threads_for_setup(const Scenario& scenario) {
+  RunThreads threads;
+  threads.before_setup(scenario.threads);
+  return threads;
+}
 
 /// A Simulation with its thread choice (python.Simulation).
 struct SteppedSimulation {
-  explicit SteppedSimulation(const Scenario& scenario) : threads(scenario), simulation(scenario) {}
+  explicit SteppedSimulation(const Scenario& scenario)
+      : threads(threads_for_setup(scenario)), simulation(scenario) {}
 
   void step_frame() {
     threads.before_frame(simulation.particle_count());
     simulation.step_frame();
   }
 
-  ThreadChoice threads;  // first: it sets the threads before the cloth is compiled
+  RunThreads threads;  // first: it sets the threads before the cloth is compiled
   Simulation simulation;
 };
 
@@ -156,7 +142,7 @@ PYBIND11_MODULE(_tissu, m) {
       "run",
       [](const Scenario& scenario, const std::filesystem::path& out, std::optional<int> frames,
          std::function<void(py::dict)> on_frame) {
-        ThreadChoice threads(scenario);
+        RunThreads threads = threads_for_setup(scenario);
         RunOptions options;
         options.output_dir = out;
         options.frames = frames;

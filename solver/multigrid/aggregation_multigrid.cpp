@@ -94,23 +94,19 @@ void galerkin_product(const SymmetricBlockMatrix& a, MultigridLevel& fine,
   sum_blocks(fine.prolongated, fine.coarse_block, coarse);
 }
 
-// x += omega D^-1 r, node by node
-void jacobi_correction(const MultigridLevel& level, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+// x += omega D^-1 r node by node, or x = omega D^-1 r (the sweep from x = 0) unless `accumulate`
+void jacobi_sweep(const MultigridLevel& level, const Eigen::VectorXd& r, Eigen::VectorXd& x,
+                  bool accumulate) {
   const int nodes = static_cast<int>(x.size() / 3);
 #pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
   for (int i = 0; i < nodes; ++i) {
-    x.segment<3>(3 * i) +=
+    const Eigen::Vector3d step =
         jacobi_damping * (level.diagonal_inverse.block<3, 3>(0, 3 * i) * r.segment<3>(3 * i));
-  }
-}
-
-// x = omega D^-1 r: the sweep from x = 0
-void jacobi_from_zero(const MultigridLevel& level, const Eigen::VectorXd& r, Eigen::VectorXd& x) {
-  const int nodes = static_cast<int>(x.size() / 3);
-#pragma omp parallel for schedule(static) if (nodes >= min_parallel_items)
-  for (int i = 0; i < nodes; ++i) {
-    x.segment<3>(3 * i) =
-        jacobi_damping * (level.diagonal_inverse.block<3, 3>(0, 3 * i) * r.segment<3>(3 * i));
+    if (accumulate) {
+      x.segment<3>(3 * i) += step;
+    } else {
+      x.segment<3>(3 * i) = step;
+    }
   }
 }
 
@@ -179,7 +175,7 @@ void AggregationMultigrid::cycle(int index) {
     return;
   }
   // pre-smoothing from x = 0: x = omega D^-1 b, and r = b - A x
-  jacobi_from_zero(level, level.right_side, level.solution);
+  jacobi_sweep(level, level.right_side, level.solution, false);  // pre-smoothing from x = 0
   symmetric_block_residual(matrix(index), level.right_side, level.solution, level.residual);
   // r_c = P^T r: each aggregate's residuals summed
   MultigridLevel& coarse = m_levels[index + 1];
@@ -200,7 +196,7 @@ void AggregationMultigrid::cycle(int index) {
     if (a >= 0) level.solution.segment<3>(3 * i) += coarse.solution.segment<3>(3 * a);
   }
   symmetric_block_residual(level.prolongated, level.residual, coarse.solution, level.residual);
-  jacobi_correction(level, level.residual, level.solution);  // post-smoothing
+  jacobi_sweep(level, level.residual, level.solution, true);  // post-smoothing
 }
 
 void AggregationMultigrid::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {

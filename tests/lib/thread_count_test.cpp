@@ -4,6 +4,7 @@
 #include "lib/thread_count.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -42,6 +43,42 @@ TEST(UserChoseThreads, ByTheScenarioOrByOmpNumThreads) {
     setenv("OMP_NUM_THREADS", saved->c_str(), 1);
   else
     unsetenv("OMP_NUM_THREADS");
+}
+
+TEST(RunThreads, KeepTheThreadsTheUserChoseAndChooseThemOtherwise) {
+  const char* outer = std::getenv("OMP_NUM_THREADS");
+  const std::optional<std::string> saved = outer ? std::optional<std::string>(outer) : std::nullopt;
+  const int outer_threads = omp_get_max_threads();
+  unsetenv("OMP_NUM_THREADS");
+
+  RunThreads by_scenario;
+  by_scenario.before_setup(3);
+  EXPECT_EQ(omp_get_max_threads(), 3);
+  EXPECT_EQ(by_scenario.most_threads(), 3);
+  by_scenario.before_frame(1000000);
+  EXPECT_EQ(omp_get_max_threads(), 3);  // whatever the cloth's size
+
+  RunThreads chosen;
+  chosen.before_setup(0);
+  EXPECT_EQ(chosen.most_threads(), omp_get_num_procs());
+  EXPECT_GE(omp_get_max_threads(), 1);  // the idle cores
+  EXPECT_LE(omp_get_max_threads(), omp_get_num_procs());
+  chosen.before_frame(10);  // too few particles for a second thread
+  EXPECT_EQ(omp_get_max_threads(), 1);
+
+  setenv("OMP_NUM_THREADS", "2", 1);
+  omp_set_num_threads(2);  // as the OpenMP runtime reads OMP_NUM_THREADS at start
+  RunThreads by_environment;
+  by_environment.before_setup(0);
+  by_environment.before_frame(10);
+  EXPECT_EQ(omp_get_max_threads(), 2);
+  EXPECT_EQ(by_environment.most_threads(), 2);
+
+  if (saved)
+    setenv("OMP_NUM_THREADS", saved->c_str(), 1);
+  else
+    unsetenv("OMP_NUM_THREADS");
+  omp_set_num_threads(outer_threads);
 }
 
 TEST(CoresUsedByOthers, IsTheBusyTimeNotSpentByThisProcessPerSecond) {
