@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "solver/integrators/lbfgs_history.hpp"
 #include "solver/integrators/minimisation_workspace.hpp"
 #include "solver/multigrid/pd_multigrid.hpp"
 
@@ -17,15 +18,10 @@ struct QuasiNewtonWorkspace {
   PdMultigrid pd_multigrid;            ///< the PD matrix's V-cycle, the other initial Hessian
   Eigen::VectorXd friction_stiffness;  ///< #F friction's stiffness added to it (N/m), or empty
   Eigen::VectorXd direction;           ///< 3#P the search direction (m)
-  Eigen::MatrixXd position_changes;    ///< 3#P x history: s_k = x_{k+1} - x_k (m)
-  Eigen::MatrixXd gradient_changes;    ///< 3#P x history: t_k = g_{k+1} - g_k (N)
-  std::vector<double> curvature;       ///< history: 1 / (s_k . t_k) (1/J)
-  std::vector<double> coefficient;     ///< history: two-loop scratch
-  int stored_pairs = 0;                ///< pairs in the history, the newest at (newest_pair)
-  int newest_pair = -1;
-  int iterations = 0;             ///< L-BFGS iterations of the last step
-  int newton_iterations = 0;      ///< Newton iterations that finished it (newton_fallback)
-  double correction_ratio = 0.0;  ///< the last relative_correction() (dimensionless)
+  LbfgsHistory history;                ///< the last pairs s_k = x_{k+1} - x_k, t_k = g_{k+1} - g_k
+  int iterations = 0;                  ///< L-BFGS iterations of the last step
+  int newton_iterations = 0;           ///< Newton iterations that finished it (newton_fallback)
+  double correction_ratio = 0.0;       ///< the last relative_correction() (dimensionless)
   /// |g| at the end of the last step / max(|g| at its start, tolerance F), F = step_force_scale()
   double gradient_ratio = 0.0;
 };
