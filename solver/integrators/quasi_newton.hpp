@@ -14,10 +14,10 @@ namespace tissu {
 /// One backward-Euler step: minimises the incremental potential E (incremental_potential.hpp:
 /// springs, their couplings and their damping, air damping implicit, gravity and wind at the start
 /// of the step) by L-BFGS (Nocedal & Wright 2006, Algorithm 7.4) from x_0 = x_n + h v_n:
-/// - the L-BFGS direction of the last params.quasi_newton.history pairs (lbfgs_history.hpp: the
-///   two-loop recursion's, in four passes over the vectors), its initial inverse
-///   Hessian H_0^-1 = (M/h^2 + L)^-1, the PD matrix (Liu et al. 2017: far closer to the Hessian
-///   of stiff springs than a scaled identity, constant per model and h, prefactorised once);
+/// - the two-loop recursion over the last params.quasi_newton.history pairs (lbfgs_history.hpp),
+///   its initial inverse Hessian H_0^-1 = (M/h^2 + L)^-1, the PD matrix (Liu et al. 2017: far
+///   closer to the Hessian of stiff springs than a scaled identity, constant per model and h,
+///   prefactorised once);
 /// - a backtracking line search on E (Armijo, c = 1e-4), falling back on the H_0 direction when
 ///   the history gives none;
 /// - stops when the last quasi-Newton correction, relative to the step's displacement
