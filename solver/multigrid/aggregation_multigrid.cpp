@@ -175,7 +175,7 @@ void AggregationMultigrid::cycle(int index) {
     return;
   }
   // pre-smoothing from x = 0: x = omega D^-1 b, and r = b - A x
-  jacobi_sweep(level, level.right_side, level.solution, false);  // pre-smoothing from x = 0
+  jacobi_sweep(level, level.right_side, level.solution, false);
   symmetric_block_residual(matrix(index), level.right_side, level.solution, level.residual);
   // r_c = P^T r: each aggregate's residuals summed
   MultigridLevel& coarse = m_levels[index + 1];
