@@ -29,18 +29,18 @@ struct SpringTermInputs {
   double viscous_scale;               ///< 1/h (1/s)
 };
 
-/// Springs [first, last): each one's force on its first end (N) into force_n, and the sum of their
-/// energies (J), in a plain loop over flat arrays that GCC vectorises: two springs a register in
-/// SSE2, four in AVX2 (spring_terms_avx2()), their ends' coordinates gathered.
+/// Springs [first, last): each one's energy (J) into energy_j[s - first] and force on its first
+/// end (N) into force_n, in a plain loop over flat arrays that GCC vectorises: two springs a
+/// register in SSE2, four in AVX2 (spring_terms_avx2()), their ends' coordinates gathered.
 ///   elastic: E = k/2 (|d| - l)^2, f = -(k (|d| - l) + T) d / |d|, T the couplings' tension;
 ///   viscous along the start direction: E = nu/(2h) r^2, f = -(nu/h) r u_n, r = (d - d_n) . u_n.
 /// The viscous and coupling terms are compiled in only when the model has them: without, the loop
 /// reads 24 bytes a spring instead of 72, which is what it costs on a cloth larger than the caches.
 template <bool viscous, bool coupled>
-__attribute__((always_inline)) inline double spring_terms(const SpringTermInputs& in, int first,
-                                                          int last, double* __restrict force_n) {
-  double energy_j = 0.0;
-#pragma omp simd reduction(+ : energy_j)
+__attribute__((always_inline)) inline void spring_terms(const SpringTermInputs& in, int first,
+                                                        int last, double* __restrict energy_j,
+                                                        double* __restrict force_n) {
+#pragma omp simd
   for (int s = first; s < last; ++s) {
     const int i = in.first_ends[s], j = in.second_ends[s];
     const double dx = in.x[3 * i] - in.x[3 * j];
@@ -53,37 +53,55 @@ __attribute__((always_inline)) inline double spring_terms(const SpringTermInputs
     // 0 where the spring has no direction; a product, not a branch, so that the loop vectorises
     const double has_direction = length_m >= spring_length_epsilon ? 1.0 : 0.0;
     const double elastic = -has_direction * tension_n / std::max(length_m, spring_length_epsilon);
+    double energy = 0.5 * in.stiffness[s] * stretch_m * stretch_m;
     double fx = elastic * dx, fy = elastic * dy, fz = elastic * dz;
-    energy_j += 0.5 * in.stiffness[s] * stretch_m * stretch_m;
     if constexpr (viscous) {
       const double ux = in.start_directions[3 * s], uy = in.start_directions[3 * s + 1],
                    uz = in.start_directions[3 * s + 2];
       const double rate_m = ux * dx + uy * dy + uz * dz - in.start_projections_m[s];
       const double viscous_n_per_m = in.viscous_scale * in.damping[s];
-      energy_j += 0.5 * viscous_n_per_m * rate_m * rate_m;
+      energy += 0.5 * viscous_n_per_m * rate_m * rate_m;
       fx -= viscous_n_per_m * rate_m * ux;
       fy -= viscous_n_per_m * rate_m * uy;
       fz -= viscous_n_per_m * rate_m * uz;
     }
+    energy_j[s - first] = energy;
     force_n[3 * s] = fx;
     force_n[3 * s + 1] = fy;
     force_n[3 * s + 2] = fz;
   }
-  return energy_j;
+}
+
+/// spring_terms() in blocks whose energies stay in a buffer on the stack, added by Eigen's
+/// vectorised sum; returns the springs' energy (J). (A `reduction` clause on the loop kept GCC 12
+/// from vectorising it at all.)
+template <bool viscous, bool coupled>
+__attribute__((always_inline)) inline double summed_spring_terms(const SpringTermInputs& in,
+                                                                 int first, int last,
+                                                                 double* force_n) {
+  constexpr int block = 256;
+  double energies_j[block];
+  double total_j = 0.0;
+  for (int begin = first; begin < last; begin += block) {
+    const int end = std::min(last, begin + block);
+    spring_terms<viscous, coupled>(in, begin, end, energies_j, force_n);
+    total_j += Eigen::Map<const Eigen::VectorXd>(energies_j, end - begin).sum();
+  }
+  return total_j;
 }
 
 using SpringTermsKernel = double (*)(const SpringTermInputs&, int, int, double*);
 
 template <bool viscous, bool coupled>
 double spring_terms_portable(const SpringTermInputs& in, int first, int last, double* force_n) {
-  return spring_terms<viscous, coupled>(in, first, last, force_n);
+  return summed_spring_terms<viscous, coupled>(in, first, last, force_n);
 }
 
 #if defined(__x86_64__)
 template <bool viscous, bool coupled>
 __attribute__((target("avx2,fma"))) double spring_terms_avx2(const SpringTermInputs& in, int first,
                                                              int last, double* force_n) {
-  return spring_terms<viscous, coupled>(in, first, last, force_n);
+  return summed_spring_terms<viscous, coupled>(in, first, last, force_n);
 }
 #endif
 
