@@ -158,12 +158,14 @@ AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<
 }
 
 // the level's operator A, its Jacobi scale (from its own Gershgorin bound) and the float copy
-// the cycles read
-void set_operator(PdMultigridLevel& level, RowMatrix matrix) {
+// the cycles read; returns the bound on rho(D^-1 A)
+double set_operator(PdMultigridLevel& level, RowMatrix matrix) {
   level.matrix = std::move(matrix);
   const Eigen::VectorXd diagonal = level.matrix.diagonal();
-  level.jacobi_scale = jacobi_scale(diagonal, jacobi_radius_bound(level.matrix, diagonal));
+  const double radius_bound = jacobi_radius_bound(level.matrix, diagonal);
+  level.jacobi_scale = jacobi_scale(diagonal, radius_bound);
   level.cycle_matrix = level.matrix.cast<float>();
+  return radius_bound;
 }
 
 }  // namespace
@@ -175,14 +177,13 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
   m_levels.emplace_back();
   RowMatrix finest = pd_free_particle_matrix(system);
   if (!(finest.diagonal().array() > 0.0).all()) return false;
-  set_operator(m_levels[0], std::move(finest));
+  double radius_bound = set_operator(m_levels[0], std::move(finest));
   AggregationGraph graph = nearest_neighbour_graph(model, system);
   for (int index = 0;; ++index) {
     PdMultigridLevel& fine = m_levels[index];
     const RowMatrix& a = fine.matrix;
     const int nodes = static_cast<int>(a.rows());
     const Eigen::VectorXd diagonal = a.diagonal();
-    const double radius_bound = jacobi_radius_bound(a, diagonal);
     fine.base_matrix = a;
     fine.solution.setZero(3, nodes);
     fine.residual.setZero(3, nodes);
@@ -211,7 +212,7 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     RowMatrix coarse = fine.restrictor * a_p;
     coarse.prune(0.0);
     m_levels.emplace_back();
-    set_operator(m_levels.back(), std::move(coarse));
+    radius_bound = set_operator(m_levels.back(), std::move(coarse));
   }
   m_extra = false;
   if (!factor_coarsest()) return false;
