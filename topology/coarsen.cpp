@@ -86,16 +86,6 @@ bool calm_around(const ClothComplex& lcc, const Bisection& b, double hysteresis)
   return true;
 }
 
-/// Linear momentum of the unpinned particles among `vertices` (kg m/s).
-Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  for (Vertex_handle v : vertices) {
-    if (v->info().pinned) continue;
-    p += v->info().mass * to_eigen(v->info().velocity);
-  }
-  return p;
-}
-
 void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings) {
   std::vector<Vertex_handle> with_middle = b.patch;
   with_middle.push_back(b.middle);
@@ -114,16 +104,8 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
   }
   update_around_faces(lcc, b.corner_faces, settings);
 
-  // hand the removed particle's momentum to the free corners, in proportion to their mass (a
-  // pinned particle's momentum is the clamp's)
-  double free_mass_kg = 0.0;
-  for (Vertex_handle v : b.patch) free_mass_kg += v->info().pinned ? 0.0 : v->info().mass;
-  if (free_mass_kg > 0.0) {
-    const Eigen::Vector3d dv = (momentum_before - free_momentum(b.patch)) / free_mass_kg;
-    for (Vertex_handle v : b.patch) {
-      if (!v->info().pinned) v->info().velocity = v->info().velocity + to_vector(dv);
-    }
-  }
+  // hand the removed particle's momentum to the free corners (a pinned particle's is the clamp's)
+  set_free_momentum(b.patch, momentum_before);
 }
 
 }  // namespace

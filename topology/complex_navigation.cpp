@@ -18,6 +18,16 @@ Vertex_const_handle vertex_after_edge(const ClothComplex& lcc, Dart_const_handle
   return lcc.vertex_attribute(lcc.next(lcc.next(dart)));
 }
 
+bool joined_by_edge(const ClothComplex& lcc, Vertex_const_handle a, Vertex_const_handle b) {
+  // every edge at `a` has a dart leaving `a` or, on the border, arriving before one that does
+  for (Dart_const_handle d : darts_leaving(lcc, a)) {
+    if (lcc.vertex_attribute(lcc.next(d)) == b || lcc.vertex_attribute(lcc.previous(d)) == b) {
+      return true;
+    }
+  }
+  return false;
+}
+
 template <MaybeConstClothComplex Complex>
 Vertex_handle_of<Complex> nearest_vertex(Complex& lcc, const Eigen::Vector3d& rest_point_m) {
   const auto distance2 = [&](Vertex_const_handle v) {

@@ -46,6 +46,9 @@ std::vector<Dart_handle_of<Complex>> darts_leaving(Complex& lcc, Vertex_handle_o
 /// The vertex that follows the dart's edge in the dart's face (the apex for a triangle).
 Vertex_const_handle vertex_after_edge(const ClothComplex& lcc, Dart_const_handle dart);
 
+/// Whether an edge joins `a` and `b`.
+bool joined_by_edge(const ClothComplex& lcc, Vertex_const_handle a, Vertex_const_handle b);
+
 /// The vertex whose material coordinates are nearest `rest_point_m` (the first in container order
 /// among equally near ones). The complex must have a vertex.
 template <MaybeConstClothComplex Complex>

@@ -13,6 +13,18 @@ Eigen::Vector2d corner_uv(const ClothComplex& lcc, Dart_const_handle dart) {
   return {uv.u, uv.v};
 }
 
+bool is_uv_seam(const ClothComplex& lcc, Dart_const_handle dart) {
+  if (lcc.is_free<2>(dart)) return false;
+  const auto differ = [&](Dart_const_handle p, Dart_const_handle q) {
+    const CornerUv& a = lcc.info(p).uv;
+    const CornerUv& b = lcc.info(q).uv;
+    return a.given != b.given || a.u != b.u || a.v != b.v;
+  };
+  // the dart a -> b and, across, b -> a: a's corners are the dart and the one after its twin
+  const Dart_const_handle twin = lcc.opposite<2>(dart);
+  return differ(dart, lcc.next(twin)) || differ(lcc.next(dart), twin);
+}
+
 // both read the cloth's having UVs off the darts they copy from, which are old ones: a new dart
 // may take any slot of CGAL's container, the first one too, so has_corner_uvs cannot tell here
 

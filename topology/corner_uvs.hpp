@@ -17,6 +17,10 @@ bool has_corner_uvs(const ClothComplex& lcc);
 /// The UV of the dart's origin in the dart's face.
 Eigen::Vector2d corner_uv(const ClothComplex& lcc, Dart_const_handle dart);
 
+/// Whether the edge of `dart` is a UV seam: its two faces give one of its ends different UVs.
+/// False on the border and on a cloth without UVs.
+bool is_uv_seam(const ClothComplex& lcc, Dart_const_handle dart);
+
 /// Gives each dart leaving `vertex`, just inserted into an edge (a, b) by insert_cell_0_in_cell_1
 /// so that its faces run a -> vertex -> b, the midpoint of the UVs of a and b in that face:
 /// uv(d) = (uv(previous(d)) + uv(next(d))) / 2, linear interpolation at the edge's midpoint, as for

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "topology/eigen_conversions.hpp"
 #include "topology/mass_lumping.hpp"
 #include "topology/rest_geometry.hpp"
 #include "topology/spring_assignment.hpp"
@@ -23,6 +24,25 @@ void update_around_faces(ClothComplex& lcc, const std::vector<Dart_handle>& face
   }
   for (Vertex_handle v : vertices) lump_vertex_mass(lcc, v);
   for (Dart_handle d : darts) assign_dart_springs(lcc, d, settings);
+}
+
+Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (Vertex_handle v : vertices) {
+    if (!v->info().pinned) p += v->info().mass * to_eigen(v->info().velocity);
+  }
+  return p;
+}
+
+void set_free_momentum(const std::vector<Vertex_handle>& vertices,
+                       const Eigen::Vector3d& momentum_kg_m_per_s) {
+  double free_mass_kg = 0.0;
+  for (Vertex_handle v : vertices) free_mass_kg += v->info().pinned ? 0.0 : v->info().mass;
+  if (!(free_mass_kg > 0.0)) return;
+  const Eigen::Vector3d dv = (momentum_kg_m_per_s - free_momentum(vertices)) / free_mass_kg;
+  for (Vertex_handle v : vertices) {
+    if (!v->info().pinned) v->info().velocity = v->info().velocity + to_vector(dv);
+  }
 }
 
 }  // namespace tissu

@@ -3,6 +3,7 @@
 /// After a topological edit: rest areas, masses and springs recomputed around what changed only
 /// (the course's second step of mesh refinement: neighbourhoods, masses and stiffnesses).
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "topology/cloth_complex.hpp"
@@ -15,5 +16,14 @@ namespace tissu {
 /// of those faces and of the darts across their edges.
 void update_around_faces(ClothComplex& lcc, const std::vector<Dart_handle>& faces,
                          const SpringSettings& settings);
+
+/// Linear momentum sum m v of the unpinned particles among `vertices` (kg m/s).
+Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices);
+
+/// Gives the unpinned particles among `vertices` one common velocity change, so that their linear
+/// momentum becomes `momentum_kg_m_per_s` (a pinned particle's momentum is its handle's). Nothing
+/// when none is free.
+void set_free_momentum(const std::vector<Vertex_handle>& vertices,
+                       const Eigen::Vector3d& momentum_kg_m_per_s);
 
 }  // namespace tissu
