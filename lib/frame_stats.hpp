@@ -24,7 +24,8 @@ struct FrameStats {
   int unconverged_steps = 0;      ///< steps that missed their integrator's tolerance
   int splits = 0;    ///< edges bisected by adaptive refinement after this frame, and around crack
                      ///< tips during it
-  int merges = 0;    ///< bisections undone by adaptive coarsening after this frame
+  int merges = 0;    ///< particles removed by adaptive coarsening after this frame (bisections
+                     ///< undone, or collapses of anisotropic remeshing)
   int contacts = 0;  ///< particle-obstacle contacts resolved in the frame's last step
   int self_contacts =
       0;  ///< pairs pushed apart or stopped by self-collision, over the frame's steps

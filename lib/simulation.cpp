@@ -26,6 +26,7 @@
 #include "topology/current_mesh.hpp"
 #include "topology/edge_measures.hpp"
 #include "topology/refine.hpp"
+#include "topology/remesh.hpp"
 #include "topology/tear.hpp"
 
 namespace tissu {
@@ -125,6 +126,7 @@ RenderFrame snapshot(const ClothComplex& lcc, const std::vector<Obstacle>& obsta
 struct Adaptation {
   int splits = 0;
   int merges = 0;
+  int flips = 0;  ///< anisotropic remeshing's
 };
 
 /// Refines where the sizing field asks for it, then coarsens where the cloth has calmed down.
@@ -132,6 +134,11 @@ Adaptation adapt(ClothComplex& lcc, const Scenario& scenario, double time_s) {
   const AdaptiveSettings& adaptive = scenario.adaptive;
   const SizingInputs inputs{&scenario.solver.obstacles, time_s};
   Adaptation changes;
+  if (adaptive.refinement.anisotropic) {
+    const RemeshReport r =
+        remesh(lcc, adaptive.refinement, adaptive.hysteresis, scenario.springs, inputs);
+    return {r.splits, r.collapses, r.flips};
+  }
   changes.splits = refine(lcc, adaptive.refinement, scenario.springs, inputs).splits;
   if (adaptive.hysteresis > 0.0) {
     changes.merges =
@@ -214,7 +221,7 @@ Adaptation adapt_frame(const Scenario& scenario, int frame, ClothComplex& lcc,
   edit_and_recompile(lcc, cloth, [&](ClothComplex& complex) {
     if (!due) return false;
     changes = adapt(complex, scenario, cloth.state.time);
-    return changes.splits + changes.merges > 0;
+    return changes.splits + changes.merges + changes.flips > 0;
   });
   return changes;
 }

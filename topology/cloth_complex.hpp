@@ -7,6 +7,8 @@
 
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 
+#include <Eigen/Core>
+
 #include <cstdint>
 
 #include "topology/kernel.hpp"
@@ -92,6 +94,10 @@ struct FaceRest {
   /// The sizing field at the last adaptation pass: 1 / (target edge length)^2 in rest space
   /// (1/m^2), sizing_field.hpp. Splits copy it to both halves until the next pass.
   double sizing_per_m2 = 0.0;
+  /// With anisotropic remeshing, the sizing metric at the last pass: a symmetric tensor M in
+  /// material coordinates (1/m^2) under which a rest edge e is as long as the cloth wants there
+  /// when e^T M e = 1 (sizing_metric.hpp); zero otherwise.
+  Eigen::Matrix3d sizing_metric_per_m2 = Eigen::Matrix3d::Zero();
   /// The term that set sizing_per_m2 at that pass, none where it lets coarsening merge the face.
   SizingTerm sizing_term = SizingTerm::none;
 };

@@ -161,11 +161,13 @@ void collapse_vertex(ClothComplex& lcc, Vertex_handle removed, Vertex_handle kep
   std::vector<Dart_handle> link_darts;
   for (Dart_handle d : star.out) link_darts.push_back(lcc.next(d));
   double input_area_m4 = 0.0, rest_area_m2 = 0.0, sizing_sum_per_m2 = 0.0;
+  Eigen::Matrix3d metric_sum_per_m2 = Eigen::Matrix3d::Zero();
   for (Dart_handle d : star.out) {
     const FaceRest& face = lcc.info<2>(d);
     input_area_m4 += face.input_area * face.rest_area;
     rest_area_m2 += face.rest_area;
     sizing_sum_per_m2 += face.sizing_per_m2;
+    metric_sum_per_m2 += face.sizing_metric_per_m2;
   }
   std::vector<Vertex_handle> neighbours = star.link;
   std::vector<Vertex_handle> with_removed = neighbours;
@@ -201,6 +203,7 @@ void collapse_vertex(ClothComplex& lcc, Vertex_handle removed, Vertex_handle kep
     FaceRest& rest = lcc.info<2>(face);
     rest.input_area = input_area_m4 / rest_area_m2;
     rest.sizing_per_m2 = sizing_sum_per_m2 / static_cast<double>(star.faces());
+    rest.sizing_metric_per_m2 = metric_sum_per_m2 / static_cast<double>(star.faces());
   }
   update_around_faces(lcc, faces, settings);
   set_free_momentum(neighbours, momentum_before);

@@ -67,6 +67,7 @@ Dart_handle flip_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings&
     FaceRest& rest = lcc.info<2>(face);
     rest.input_area = 0.5 * (own.input_area + across.input_area);
     rest.sizing_per_m2 = 0.5 * (own.sizing_per_m2 + across.sizing_per_m2);
+    rest.sizing_metric_per_m2 = 0.5 * (own.sizing_metric_per_m2 + across.sizing_metric_per_m2);
   }
   update_around_faces(lcc, faces, settings);
   // the four corners' masses moved between them: one common velocity change keeps their momentum

@@ -39,6 +39,13 @@ struct RefinementOptions {
   /// Refine edges longer than this in rest space (m), whatever the criteria, and never coarsen
   /// back to them; 0 sets no maximum.
   double max_edge_length_m = 0.0;
+  /// Remeshing: false bisects triangles at their longest edge and undoes bisections (refine.hpp,
+  /// coarsen.hpp); true follows an anisotropic sizing metric with splits, flips and collapses
+  /// (remesh.hpp), so that cells may be long along a fold and short across it.
+  bool anisotropic = false;
+  /// Anisotropic remeshing: the longest a cell may be for its width, as the ratio of the
+  /// metric's largest to smallest target edge length (ARCSim's 1 / aspect_min, 5 by default there).
+  double max_aspect_ratio = 5.0;
   /// Stop refining when the cloth has this many particles.
   int max_particles = 100000;
   /// Undo a bisection only after this many adaptation passes in a row found it calm (>= 1).

@@ -293,6 +293,9 @@ AdaptiveSettings read_adaptive(JsonObjectReader adaptive, double frame_rate_hz) 
       static_cast<int>(std::clamp(std::ceil(coarsen_after_s / interval_s - 1e-9), 1.0, 1e9));
   a.hysteresis =
       adaptive.number_or("hysteresis", a.hysteresis, {0.0, 0.999, false, "a number in [0, 1)"});
+  r.anisotropic = adaptive.boolean_or("anisotropic", r.anisotropic);
+  r.max_aspect_ratio =
+      adaptive.number_or("max_aspect_ratio", r.max_aspect_ratio, between(1.0, 100.0, ""));
   if (a.enabled && r.strain_threshold == 0.0 && r.curvature_threshold_rad == 0.0 &&
       r.max_edge_length_m == 0.0) {
     adaptive.fail("strain",

@@ -85,6 +85,29 @@ TEST(AdaptiveRun, ScenarioChecksTheAdaptiveSection) {
                 "\"max_edge_length\""));
   EXPECT_THAT(error_of({"adaptive.curvature=4"}),
               HasSubstr("adaptive.curvature: expected a number between 0"));
+  EXPECT_THAT(error_of({"adaptive.max_aspect_ratio=0.5"}),
+              HasSubstr("adaptive.max_aspect_ratio: expected a number between 1"));
+  EXPECT_THAT(error_of({"adaptive.anisotropic=1"}), HasSubstr("adaptive.anisotropic"));
+}
+
+TEST(AdaptiveRun, AnisotropicRemeshingKeepsTheTotalMassAndGivesParticlesBack) {
+  const Scenario scenario = parse_scenario(waving_flag, "flag.json", {"adaptive.anisotropic=true"});
+  ASSERT_TRUE(scenario.adaptive.refinement.anisotropic);
+  RunOptions options;
+  options.output_dir = test::fresh_temp_dir("anisotropic_run");
+  int merges = 0;
+  options.on_frame = [&](const FrameStats& row) { merges += row.merges; };
+  const RunResult result = run_scenario(scenario, options);
+  ASSERT_TRUE(result.ok) << result.failure;
+
+  const Column stats = read_stats(options.output_dir / "stats.csv");
+  const double expected_kg = 0.2 * 1.0 * 0.6;
+  for (std::size_t frame = 0; frame < stats.total_mass_kg.size(); ++frame) {
+    EXPECT_NEAR(stats.total_mass_kg[frame], expected_kg, 1e-12 * expected_kg) << "frame " << frame;
+  }
+  EXPECT_GT(stats.splits, 0);
+  EXPECT_GT(merges, 0);  // collapses, where the folds travel on
+  EXPECT_LE(*std::max_element(stats.particles.begin(), stats.particles.end()), 400);
 }
 
 TEST(AdaptiveRun, AQuadClothIsCutIntoTrianglesOnceAndRefines) {
