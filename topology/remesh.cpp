@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "topology/collapse_vertex.hpp"
@@ -53,11 +54,33 @@ Eigen::Matrix3d vertex_metric(const ClothComplex& lcc, Vertex_const_handle v) {
   return area_m2 > 0.0 ? Eigen::Matrix3d(sum / area_m2) : sum;
 }
 
-double pair_metric_length2(const ClothComplex& lcc, Vertex_const_handle a, Vertex_const_handle b) {
+/// Every particle's vertex_metric(), taken once at the start of a pass and kept through its
+/// edits, as ARCSim keeps its vertex sizing: a particle a split makes takes the mean of the
+/// edge's ends.
+class VertexMetrics {
+ public:
+  explicit VertexMetrics(const ClothComplex& lcc) {
+    metric_.reserve(lcc.vertex_attributes().size());
+    for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+      metric_[&*v] = vertex_metric(lcc, v);
+    }
+  }
+  const Eigen::Matrix3d& operator()(Vertex_const_handle v) const { return metric_.at(&*v); }
+  void add_midpoint(Vertex_const_handle middle, Vertex_const_handle a, Vertex_const_handle b) {
+    metric_[&*middle] = 0.5 * ((*this)(a) + (*this)(b));
+  }
+
+ private:
+  std::unordered_map<const void*, Eigen::Matrix3d> metric_;
+};
+
+/// The mean of e^T M e over the metrics M of the edge's two ends (ARCSim's edge_metric).
+template <class MetricOf>
+double pair_metric_length2(const MetricOf& metric_of, Vertex_const_handle a,
+                           Vertex_const_handle b) {
   const Point3& ra = a->info().rest_position;
   const Point3& rb = b->info().rest_position;
-  return 0.5 * (metric_length2(vertex_metric(lcc, a), ra, rb) +
-                metric_length2(vertex_metric(lcc, b), ra, rb));
+  return 0.5 * (metric_length2(metric_of(a), ra, rb) + metric_length2(metric_of(b), ra, rb));
 }
 
 Eigen::Vector3d rest_of(Vertex_const_handle v) {
@@ -94,11 +117,36 @@ bool flip_keeps_shape(const ClothComplex& lcc, Dart_const_handle dart) {
   return pair_strain(c, e) <= strain_before;
 }
 
+/// should_flip() with the vertex metrics `metric_of` gives.
+template <class MetricOf>
+bool should_flip_in(const ClothComplex& lcc, Dart_const_handle dart, const MetricOf& metric_of) {
+  if (lcc.is_free<2>(dart)) return false;
+  const Vertex_const_handle va = lcc.vertex_attribute(dart);
+  const Vertex_const_handle vb = lcc.vertex_attribute(lcc.next(dart));
+  const Vertex_const_handle vc = vertex_after_edge(lcc, dart);
+  const Vertex_const_handle ve = vertex_after_edge(lcc, lcc.opposite<2>(dart));
+  const Eigen::Vector3d a = rest_of(va), b = rest_of(vb), c = rest_of(vc), e = rest_of(ve);
+  Eigen::Matrix3d m = 0.25 * (metric_of(va) + metric_of(vb) + metric_of(vc) + metric_of(ve));
+  // where the metric asks nothing of the edge (it is under a third of its target in every
+  // direction), the Euclidean Delaunay test at the edge's scale: flat cloth keeps well-shaped
+  // triangles, which lets collapses go on
+  const double scale_per_m2 = 1.0 / (b - a).squaredNorm();
+  if (m.trace() < scale_per_m2 / 9.0) m = scale_per_m2 * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+  const auto wedge = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+    return p.cross(q).dot(normal);
+  };
+  const double at_e = wedge(b - e, a - e);
+  const double at_c = wedge(a - c, b - c);
+  const double lhs = at_e * (a - c).dot(m * (b - c)) + (b - e).dot(m * (a - e)) * at_c;
+  return lhs < -flip_margin * (at_e + at_c);
+}
+
 /// Flips the edges of `edges` that should_flip() wants and flip_refusal() allows; returns how many.
 /// An edge an earlier flip of the list removed is skipped: its dart no longer runs between the
 /// same two particles.
 int flip_where_wanted(ClothComplex& lcc, const std::vector<Dart_handle>& edges,
-                      const SpringSettings& settings) {
+                      const VertexMetrics& metrics, const SpringSettings& settings) {
   std::vector<std::pair<Vertex_const_handle, Vertex_const_handle>> ends;
   for (Dart_handle d : edges)
     ends.emplace_back(lcc.vertex_attribute(d), lcc.vertex_attribute(lcc.next(d)));
@@ -109,7 +157,7 @@ int flip_where_wanted(ClothComplex& lcc, const std::vector<Dart_handle>& edges,
         lcc.vertex_attribute(lcc.next(d)) != ends[i].second) {
       continue;
     }
-    if (should_flip(lcc, d) && !flip_refusal(lcc, d) && flip_keeps_shape(lcc, d)) {
+    if (should_flip_in(lcc, d, metrics) && !flip_refusal(lcc, d) && flip_keeps_shape(lcc, d)) {
       flip_edge(lcc, d, settings);
       ++flips;
     }
@@ -153,7 +201,7 @@ bool split_keeps_quality(const ClothComplex& lcc, Dart_const_handle dart, double
 /// Splits every edge longer than 1 in the metric (and at least twice the shortest edge allowed),
 /// the longest first, flipping around each new particle; returns the splits and flips made.
 std::pair<int, int> split_long_edges(ClothComplex& lcc, const RefinementOptions& o,
-                                     const SpringSettings& settings) {
+                                     VertexMetrics& metrics, const SpringSettings& settings) {
   struct LongEdge {
     double length2;
     Dart_handle dart;
@@ -164,7 +212,8 @@ std::pair<int, int> split_long_edges(ClothComplex& lcc, const RefinementOptions&
     if (edge_rest_length_m(lcc, d) < 2.0 * o.min_edge_length_m || !faces_are_triangles(lcc, d)) {
       continue;
     }
-    const double length2 = edge_metric_length2(lcc, d);
+    const double length2 =
+        pair_metric_length2(metrics, lcc.vertex_attribute(d), lcc.vertex_attribute(lcc.next(d)));
     if (length2 > 1.0) {
       long_edges.push_back(
           {length2, d, lcc.vertex_attribute(d), lcc.vertex_attribute(lcc.next(d))});
@@ -185,8 +234,10 @@ std::pair<int, int> split_long_edges(ClothComplex& lcc, const RefinementOptions&
       continue;
     }
     const Dart_handle from_middle = split_edge(lcc, edge.dart, settings);
+    metrics.add_midpoint(lcc.vertex_attribute(from_middle), edge.from, edge.to);
     ++splits;
-    flips += flip_where_wanted(lcc, edges_around(lcc, lcc.vertex_attribute(from_middle)), settings);
+    flips += flip_where_wanted(lcc, edges_around(lcc, lcc.vertex_attribute(from_middle)), metrics,
+                               settings);
   }
   return {splits, flips};
 }
@@ -227,29 +278,30 @@ bool collapse_keeps_shape(ClothComplex& lcc, Vertex_handle v, Vertex_handle u) {
 /// The neighbour of `v` it may collapse onto with the shortest new edges under `hysteresis`, if
 /// any (remesh(), step 3).
 std::optional<Vertex_handle> collapse_target(ClothComplex& lcc, Vertex_handle v, double hysteresis,
-                                             double min_quality) {
+                                             double min_quality, const VertexMetrics& metrics) {
   std::optional<Vertex_handle> best;
   double best_length2 = hysteresis * hysteresis;
-  for (Vertex_handle u : neighbours_of(lcc, v)) {
+  const std::vector<Vertex_handle> neighbours = neighbours_of(lcc, v);
+  for (Vertex_handle u : neighbours) {
+    // every edge at u afterwards, as the next pass will measure them
+    double longest2 = 0.0;
+    for (Vertex_handle w : neighbours) {
+      if (w != u) longest2 = std::max(longest2, pair_metric_length2(metrics, u, w));
+    }
+    if (!(longest2 < best_length2)) continue;
     const std::vector<RestTriangle> after = triangles_after_collapse(lcc, v, u);
     if (after.empty() || lowest_quality(after) < min_quality || !collapse_keeps_shape(lcc, v, u)) {
       continue;
     }
-    // every edge at u afterwards, as edge_metric_length2 will read them
-    double longest2 = 0.0;
-    for (Vertex_handle w : neighbours_of(lcc, v)) {
-      if (w != u) longest2 = std::max(longest2, pair_metric_length2(lcc, u, w));
-    }
-    if (longest2 < best_length2) {
-      best_length2 = longest2;
-      best = u;
-    }
+    best_length2 = longest2;
+    best = u;
   }
   return best;
 }
 
 std::pair<int, int> collapse_calm_particles(ClothComplex& lcc, const RefinementOptions& o,
-                                            double hysteresis, const SpringSettings& settings) {
+                                            double hysteresis, const VertexMetrics& metrics,
+                                            const SpringSettings& settings) {
   std::vector<Vertex_handle> created;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
     if (v->info().source_index < 0 && !v->info().on_crack && !v->info().pinned)
@@ -261,7 +313,7 @@ std::pair<int, int> collapse_calm_particles(ClothComplex& lcc, const RefinementO
   int collapses = 0, flips = 0;
   for (Vertex_handle v : created) {
     const std::optional<Vertex_handle> onto =
-        collapse_target(lcc, v, hysteresis, 1.0 / o.max_aspect_ratio);
+        collapse_target(lcc, v, hysteresis, 1.0 / o.max_aspect_ratio, metrics);
     int& calm_passes = v->info().calm_passes;
     if (!onto) {
       calm_passes = 0;
@@ -270,7 +322,7 @@ std::pair<int, int> collapse_calm_particles(ClothComplex& lcc, const RefinementO
     if (++calm_passes < o.coarsen_after_passes) continue;
     collapse_vertex(lcc, v, *onto, settings);
     ++collapses;
-    flips += flip_where_wanted(lcc, edges_around(lcc, *onto), settings);
+    flips += flip_where_wanted(lcc, edges_around(lcc, *onto), metrics, settings);
   }
   return {collapses, flips};
 }
@@ -278,40 +330,28 @@ std::pair<int, int> collapse_calm_particles(ClothComplex& lcc, const RefinementO
 }  // namespace
 
 double edge_metric_length2(const ClothComplex& lcc, Dart_const_handle dart) {
-  return pair_metric_length2(lcc, lcc.vertex_attribute(dart), lcc.vertex_attribute(lcc.next(dart)));
+  return pair_metric_length2([&](Vertex_const_handle v) { return vertex_metric(lcc, v); },
+                             lcc.vertex_attribute(dart), lcc.vertex_attribute(lcc.next(dart)));
 }
 
 bool should_flip(const ClothComplex& lcc, Dart_const_handle dart) {
-  if (lcc.is_free<2>(dart)) return false;
-  const Vertex_const_handle va = lcc.vertex_attribute(dart);
-  const Vertex_const_handle vb = lcc.vertex_attribute(lcc.next(dart));
-  const Vertex_const_handle vc = vertex_after_edge(lcc, dart);
-  const Vertex_const_handle ve = vertex_after_edge(lcc, lcc.opposite<2>(dart));
-  const Eigen::Matrix3d m = 0.25 * (vertex_metric(lcc, va) + vertex_metric(lcc, vb) +
-                                    vertex_metric(lcc, vc) + vertex_metric(lcc, ve));
-  const Eigen::Vector3d a = rest_of(va), b = rest_of(vb), c = rest_of(vc), e = rest_of(ve);
-  const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
-  const auto wedge = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-    return p.cross(q).dot(normal);
-  };
-  const double at_e = wedge(b - e, a - e);
-  const double at_c = wedge(a - c, b - c);
-  const double lhs = at_e * (a - c).dot(m * (b - c)) + (b - e).dot(m * (a - e)) * at_c;
-  return lhs < -flip_margin * (at_e + at_c);
+  return should_flip_in(lcc, dart, [&](Vertex_const_handle v) { return vertex_metric(lcc, v); });
 }
 
 RemeshReport remesh(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
                     const SpringSettings& settings, const SizingInputs& inputs) {
   compute_sizing_metric(lcc, options, inputs);
+  VertexMetrics metrics(lcc);
   RemeshReport report;
-  std::tie(report.splits, report.flips) = split_long_edges(lcc, options, settings);
+  std::tie(report.splits, report.flips) = split_long_edges(lcc, options, metrics, settings);
   for (int round = 0; round < max_flip_rounds; ++round) {
-    const int flips = flip_where_wanted(lcc, all_edges(lcc), settings);
+    const int flips = flip_where_wanted(lcc, all_edges(lcc), metrics, settings);
     report.flips += flips;
     if (flips == 0) break;
   }
   if (hysteresis > 0.0) {
-    const auto [collapses, flips] = collapse_calm_particles(lcc, options, hysteresis, settings);
+    const auto [collapses, flips] =
+        collapse_calm_particles(lcc, options, hysteresis, metrics, settings);
     report.collapses = collapses;
     report.flips += flips;
   }

@@ -85,16 +85,28 @@ FaceShare face_share_of_edge(const ClothComplex& lcc, Dart_const_handle dart,
 /// per unit area. The same cloth at every level therefore needs k ~ 1/s^4:
 ///   k = k_scenario (A_input / A)^2,
 /// exactly 1 on the input mesh, 4 per bisection (each halves the area); the spring's damping scales
-/// alike, so that its damping rate stays that of the stiffness. The material rule
+/// alike, so that its damping rate stays that of the stiffness. With `follows_hinge_shape`
+/// (anisotropic remeshing), a refined hinge's factor is also multiplied by rho^3, rho = l^2 / A its
+/// shape (below); the input mesh's hinges keep the scenario's value. The material rule
 /// (bending_spring_stiffness) is left as it is: it matches a plate at one fold angle per hinge.
-double bending_level_factor(const ClothComplex& lcc, Dart_const_handle dart) {
+double bending_level_factor(const ClothComplex& lcc, Dart_const_handle dart,
+                            bool follows_hinge_shape) {
   const FaceRest& own = lcc.info<2>(dart);
   const FaceRest& across = lcc.info<2>(lcc.opposite<2>(dart));
   const double input_m2 = own.input_area + across.input_area;
   const double now_m2 = own.rest_area + across.rest_area;
   if (!(input_m2 > 0.0) || !(now_m2 > 0.0)) return 1.0;  // a complex built without input areas
   const double ratio = input_m2 / now_m2;
-  return ratio * ratio;
+  if (!follows_hinge_shape || !(now_m2 < input_m2 * (1.0 - 1e-12))) return ratio * ratio;
+  // The hinge's shape, rho = l^2 / A: its edge's length l over the mean height h = A / l of its
+  // two apices (A the two faces' rest area). Folding the hinge by theta shortens its spring by
+  // about h theta^2 / 4 and bends the cloth by kappa ~ theta / (2 h); with ~1 / A hinges per unit
+  // area the cloth then stores ~k h^5 kappa^4 / l, so the same cloth needs k ~ l / h^5 =
+  // rho^3 / A^2: the area rule times rho^3, 1 on a square grid's legs (rho 1), 8 on its
+  // hypotenuses (rho 2), more across the long edges of cells stretched along a fold.
+  const double edge_m = edge_rest_length_m(lcc, dart);
+  const double shape = edge_m * edge_m / now_m2;
+  return ratio * ratio * shape * shape * shape;
 }
 
 }  // namespace
@@ -119,7 +131,8 @@ void assign_dart_springs(ClothComplex& lcc, Dart_handle d, const SpringSettings&
     const Vertex_const_handle here = vertex_after_edge(lcc, d);
     const Vertex_const_handle across = vertex_after_edge(lcc, lcc.opposite<2>(d));
     if (here != across) {
-      const double level_factor = bending_level_factor(lcc, d);
+      const double level_factor =
+          bending_level_factor(lcc, d, settings.bending_follows_hinge_shape);
       double stiffness = settings.bending.stiffness * level_factor;
       if (material) {
         // from the same dart of the pair on both, so that the two darts agree to the bit

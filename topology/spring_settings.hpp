@@ -23,6 +23,10 @@ struct SpringSettings {
   SpringKindSettings shear;
   SpringKindSettings bending;
   std::optional<Material> material;  ///< unset: every spring of a kind has the kind's stiffness
+  /// Without a material, whether a refined hinge's bending spring also scales with the hinge's
+  /// shape rho = l^2 / A, as rho^3 (spring_assignment.cpp, bending_level_factor), not only with
+  /// its area: on for anisotropic remeshing, whose cells may be long along a fold.
+  bool bending_follows_hinge_shape = false;
 };
 
 }  // namespace tissu

@@ -359,6 +359,7 @@ Scenario parse_scenario(const std::string& text, const std::filesystem::path& fi
   s.solver.self_collision =
       read_self_collision(top.optional_object("self_collision", switched_off));
   s.adaptive = read_adaptive(top.optional_object("adaptive", switched_off), s.frame_rate);
+  s.springs.bending_follows_hinge_shape = s.adaptive.enabled && s.adaptive.refinement.anisotropic;
   s.tearing = read_tearing(top.optional_object("tearing", switched_off));
   if (s.tearing.enabled && s.tearing.options.strain_threshold > 0.0 &&
       s.solver.strain_limit > 0.0) {

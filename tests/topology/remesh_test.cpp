@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "cloth_test_support.hpp"
+#include "topology/local_update.hpp"
 #include "topology/refine.hpp"
 #include "topology/rest_geometry.hpp"
 #include "topology/sizing_metric.hpp"
@@ -154,6 +155,36 @@ TEST_F(RemeshTest, UnfoldingCollapsesTheFoldsParticlesAway) {
   const RemeshReport r = remesh_fully(options, 0.5);
   EXPECT_GT(r.collapses, 0);
   EXPECT_EQ(lcc.vertex_attributes().size(), input);
+}
+
+TEST(BendingHingeShape, ARefinedThinHingeIsStifferByItsShapeCubedAndAnInputOneIsNot) {
+  // a 4 m x 1 m rectangle cut along its diagonal: the hinge's shape rho = l^2 / A = 17 / 4
+  IndexedMesh rectangle;
+  rectangle.vertices = {{0, 0, 0}, {4, 0, 0}, {4, 1, 0}, {0, 1, 0}};
+  rectangle.faces = {{0, 1, 2}, {0, 2, 3}};
+  SpringSettings springs = test::all_springs();
+  springs.bending_follows_hinge_shape = true;
+  ClothComplex lcc;
+  build_cloth_complex(rectangle, density_kg_per_m2, springs, lcc);
+  const auto bending_n_per_m = [&] {
+    for (auto e = lcc.attributes<1>().begin(); e != lcc.attributes<1>().end(); ++e) {
+      if (e->info().bending.slot == SpringSlot::present) return e->info().bending.stiffness;
+    }
+    return 0.0;
+  };
+  EXPECT_DOUBLE_EQ(bending_n_per_m(), springs.bending.stiffness);  // input faces: as given
+  // as if both faces had been cut from input faces twice their size
+  std::vector<Dart_handle> faces;
+  for (auto f = lcc.one_dart_per_cell<2>().begin(); f != lcc.one_dart_per_cell<2>().end(); ++f) {
+    lcc.info<2>(f).input_area = 2.0 * lcc.info<2>(f).rest_area;
+    faces.push_back(f);
+  }
+  update_around_faces(lcc, faces, springs);
+  const double rho = 17.0 / 4.0;
+  EXPECT_NEAR(bending_n_per_m(), springs.bending.stiffness * 4.0 * rho * rho * rho, 1e-9);
+  springs.bending_follows_hinge_shape = false;
+  update_around_faces(lcc, faces, springs);
+  EXPECT_NEAR(bending_n_per_m(), springs.bending.stiffness * 4.0, 1e-12);
 }
 
 }  // namespace
