@@ -91,7 +91,8 @@ TEST(AdaptiveRun, ScenarioChecksTheAdaptiveSection) {
 }
 
 TEST(AdaptiveRun, AnisotropicRemeshingKeepsTheTotalMassAndGivesParticlesBack) {
-  const Scenario scenario = parse_scenario(waving_flag, "flag.json", {"adaptive.anisotropic=true"});
+  const Scenario scenario = parse_scenario(waving_flag, "flag.json",
+                                           {"adaptive.anisotropic=true", "adaptive.curvature=1"});
   ASSERT_TRUE(scenario.adaptive.refinement.anisotropic);
   RunOptions options;
   options.output_dir = test::fresh_temp_dir("anisotropic_run");
