@@ -93,5 +93,44 @@ TEST(SizingMetric, ARestShapeCurvedOrFlatWantsNothingAtRest) {
   }
 }
 
+TEST(SizingMetric, TheObstacleTermIsNothingFlatOnAFloorAndTheIsotropicTermAsATensor) {
+  const SpringSettings springs = test::all_springs();
+  // the sheet lies horizontal, 2 mm above a floor of 2 mm thickness
+  GridOptions flat = test::grid(12, 8, GridCells::triangles);
+  flat.v_axis = Eigen::Vector3d::UnitY();
+  flat.origin = Eigen::Vector3d(0.0, 0.0, 0.002);
+  ClothComplex lcc;
+  build_cloth_complex(make_grid_mesh(flat), density_kg_per_m2, springs, lcc);
+  std::vector<Obstacle> floor(1);
+  floor[0].thickness_m = 0.002;
+  const SizingInputs inputs{&floor, 0.0};
+  RefinementOptions options;  // the obstacle term alone
+  options.min_edge_length_m = 1e-4;
+  options.max_aspect_ratio = 1e3;  // so that clamping changes the trace by 1e-6 at most
+  compute_sizing_metric(lcc, options, inputs);
+  for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
+    EXPECT_LT(f->info().sizing_metric_per_m2.norm(), 1e-12);
+  }
+  // tilted by 0.2 rad about its edge x = 0, which stays on the floor: the faces near that edge
+  // come down on it, and the metric's trace is the isotropic field's obstacle term
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& p = v->point();
+    v->point() = Point3(p.x() * std::cos(0.2), p.y(), 0.002 + p.x() * std::sin(0.2));
+  }
+  compute_sizing_metric(lcc, options, inputs);
+  std::vector<double> traces;
+  for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
+    traces.push_back(f->info().sizing_metric_per_m2.trace());
+  }
+  compute_sizing(lcc, options, inputs);
+  int near = 0;
+  std::size_t k = 0;
+  for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f, ++k) {
+    EXPECT_NEAR(traces[k], f->info().sizing_per_m2, 1e-6 * f->info().sizing_per_m2 + 1e-12);
+    near += f->info().sizing_per_m2 > 1.0 ? 1 : 0;
+  }
+  EXPECT_GT(near, 0);
+}
+
 }  // namespace
 }  // namespace tissu
