@@ -129,7 +129,8 @@ struct Adaptation {
   int flips = 0;  ///< anisotropic remeshing's
 };
 
-/// Refines where the sizing field asks for it, then coarsens where the cloth has calmed down.
+/// Refines where the sizing field asks for it, then coarsens where the cloth has calmed down; or,
+/// with adaptive.anisotropic, one pass of anisotropic remeshing (topology/remesh.hpp).
 Adaptation adapt(ClothComplex& lcc, const Scenario& scenario, double time_s) {
   const AdaptiveSettings& adaptive = scenario.adaptive;
   const SizingInputs inputs{&scenario.solver.obstacles, time_s};
