@@ -93,15 +93,7 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
 
   for (Dart_handle cut : b.cut_edges) lcc.remove_cell<1>(cut);
   lcc.remove_cell<0>(darts_leaving(lcc, b.middle).front());
-  // CGAL 5.5's remove_cell<0> merges the two edges at the vertex into one attribute but leaves
-  // that attribute's dart on an erased dart (it re-points the face attributes only): point
-  // every edge attribute of the restored faces at one of its live darts
-  for (Dart_handle face : b.corner_faces) {
-    for (auto d = lcc.darts_of_orbit<1>(face).begin(); d != lcc.darts_of_orbit<1>(face).end();
-         ++d) {
-      lcc.set_dart_of_attribute<1>(lcc.attribute<1>(d), d);
-    }
-  }
+  for (Dart_handle face : b.corner_faces) repoint_edge_attributes(lcc, face);
   update_around_faces(lcc, b.corner_faces, settings);
 
   // hand the removed particle's momentum to the free corners (a pinned particle's is the clamp's)

@@ -45,7 +45,7 @@ std::optional<Star<Complex>> star_of(Complex& lcc, Vertex_handle_of<Complex> v) 
     }
   }
   for (auto d = start; star.out.size() <= all.size();) {
-    if (lcc.template darts_of_orbit<1>(d).size() != 3) return std::nullopt;
+    if (!face_is_triangle(lcc, d)) return std::nullopt;
     star.out.push_back(d);
     star.link.push_back(lcc.vertex_attribute(lcc.next(d)));
     const auto back_to_v = lcc.previous(d);
@@ -195,11 +195,7 @@ void collapse_vertex(ClothComplex& lcc, Vertex_handle removed, Vertex_handle kep
   std::vector<Dart_handle> faces;
   for (std::size_t i : fan_sides(star, at)) faces.push_back(link_darts[i]);
   for (Dart_handle face : faces) {
-    // CGAL 5.5's remove_cell<0> leaves the joined edge's attribute on an erased dart
-    for (auto d = lcc.darts_of_orbit<1>(face).begin(); d != lcc.darts_of_orbit<1>(face).end();
-         ++d) {
-      lcc.set_dart_of_attribute<1>(lcc.attribute<1>(d), d);
-    }
+    repoint_edge_attributes(lcc, face);  // the edge remove_cell<0> joined
     FaceRest& rest = lcc.info<2>(face);
     rest.input_area = input_area_m4 / rest_area_m2;
     rest.sizing_per_m2 = sizing_sum_per_m2 / static_cast<double>(star.faces());

@@ -18,6 +18,19 @@ Vertex_const_handle vertex_after_edge(const ClothComplex& lcc, Dart_const_handle
   return lcc.vertex_attribute(lcc.next(lcc.next(dart)));
 }
 
+bool face_is_triangle(const ClothComplex& lcc, Dart_const_handle dart) {
+  return lcc.darts_of_orbit<1>(dart).size() == 3;
+}
+
+bool edge_between_triangles(const ClothComplex& lcc, Dart_const_handle dart) {
+  return face_is_triangle(lcc, dart) &&
+         (lcc.is_free<2>(dart) || face_is_triangle(lcc, lcc.opposite<2>(dart)));
+}
+
+Dart_const_handle edge_key(const ClothComplex& lcc, Dart_const_handle dart) {
+  return lcc.is_free<2>(dart) ? dart : std::min(dart, lcc.opposite<2>(dart));
+}
+
 bool joined_by_edge(const ClothComplex& lcc, Vertex_const_handle a, Vertex_const_handle b) {
   // every edge at `a` has a dart leaving `a` or, on the border, arriving before one that does
   for (Dart_const_handle d : darts_leaving(lcc, a)) {

@@ -46,6 +46,15 @@ std::vector<Dart_handle_of<Complex>> darts_leaving(Complex& lcc, Vertex_handle_o
 /// The vertex that follows the dart's edge in the dart's face (the apex for a triangle).
 Vertex_const_handle vertex_after_edge(const ClothComplex& lcc, Dart_const_handle dart);
 
+/// Whether the face of `dart` is a triangle.
+bool face_is_triangle(const ClothComplex& lcc, Dart_const_handle dart);
+
+/// Whether the face of `dart` and, inside the cloth, the face across its edge are triangles.
+bool edge_between_triangles(const ClothComplex& lcc, Dart_const_handle dart);
+
+/// One dart per edge, the same whichever dart of the edge is given.
+Dart_const_handle edge_key(const ClothComplex& lcc, Dart_const_handle dart);
+
 /// Whether an edge joins `a` and `b`.
 bool joined_by_edge(const ClothComplex& lcc, Vertex_const_handle a, Vertex_const_handle b);
 

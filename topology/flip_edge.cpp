@@ -13,10 +13,6 @@
 namespace tissu {
 namespace {
 
-bool face_is_triangle(const ClothComplex& lcc, Dart_const_handle d) {
-  return lcc.darts_of_orbit<1>(d).size() == 3;
-}
-
 Eigen::Vector3d rest_of(const ClothComplex& lcc, Dart_const_handle d) {
   return to_eigen(lcc.vertex_attribute(d)->info().rest_position);
 }
@@ -26,8 +22,7 @@ Eigen::Vector3d rest_of(const ClothComplex& lcc, Dart_const_handle d) {
 std::optional<std::string> flip_refusal(const ClothComplex& lcc, Dart_const_handle dart) {
   if (lcc.is_free<2>(dart)) return "the edge is on the border";
   const Dart_const_handle across = lcc.opposite<2>(dart);
-  if (!face_is_triangle(lcc, dart) || !face_is_triangle(lcc, across))
-    return "a face beside it is no triangle";
+  if (!edge_between_triangles(lcc, dart)) return "a face beside it is no triangle";
   // dart a -> b, then b -> c; across b -> a, then a -> e
   const Dart_const_handle b_to_c = lcc.next(dart);
   const Dart_const_handle a_to_e = lcc.next(across);

@@ -26,6 +26,12 @@ void update_around_faces(ClothComplex& lcc, const std::vector<Dart_handle>& face
   for (Dart_handle d : darts) assign_dart_springs(lcc, d, settings);
 }
 
+void repoint_edge_attributes(ClothComplex& lcc, Dart_handle face) {
+  for (auto d = lcc.darts_of_orbit<1>(face).begin(); d != lcc.darts_of_orbit<1>(face).end(); ++d) {
+    lcc.set_dart_of_attribute<1>(lcc.attribute<1>(d), d);
+  }
+}
+
 Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (Vertex_handle v : vertices) {

@@ -17,6 +17,11 @@ namespace tissu {
 void update_around_faces(ClothComplex& lcc, const std::vector<Dart_handle>& faces,
                          const SpringSettings& settings);
 
+/// Points the attribute of every edge of the face of `face` at a dart of that face. CGAL 5.5's
+/// remove_cell<0> merges the two edges at the removed vertex into one attribute but leaves that
+/// attribute's dart on an erased dart (it re-points the face attributes only).
+void repoint_edge_attributes(ClothComplex& lcc, Dart_handle face);
+
 /// Linear momentum sum m v of the unpinned particles among `vertices` (kg m/s).
 Eigen::Vector3d free_momentum(const std::vector<Vertex_handle>& vertices);
 

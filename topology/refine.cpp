@@ -21,11 +21,6 @@ Dart_handle longest_edge(ClothComplex& lcc, Dart_handle d) {
   return best;
 }
 
-/// One dart per edge, the same whichever dart of the edge is given.
-Dart_const_handle edge_key(const ClothComplex& lcc, Dart_const_handle d) {
-  return lcc.is_free<2>(d) ? d : std::min(d, lcc.opposite<2>(d));
-}
-
 /// Bisects the edge of `edge`, the longest of its triangle, without degrading the triangle across
 /// it: if the edge is not the longest of that neighbour too, the neighbour is bisected first at
 /// its own longest edge, recursively along the longest-edge propagation path (Rivara 1997,

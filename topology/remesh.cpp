@@ -96,9 +96,7 @@ std::vector<Dart_handle> edges_around(ClothComplex& lcc, Vertex_handle v) {
   std::set<Dart_const_handle> seen;
   for (Dart_handle out : darts_leaving(lcc, v)) {
     for (auto d = lcc.darts_of_orbit<1>(out).begin(); d != lcc.darts_of_orbit<1>(out).end(); ++d) {
-      const Dart_const_handle key =
-          lcc.is_free<2>(d) ? d : std::min<Dart_const_handle>(d, lcc.opposite<2>(d));
-      if (seen.insert(key).second) edges.push_back(d);
+      if (seen.insert(edge_key(lcc, d)).second) edges.push_back(d);
     }
   }
   return edges;
@@ -176,11 +174,6 @@ std::vector<Dart_handle> all_edges(ClothComplex& lcc) {
   return edges;
 }
 
-bool faces_are_triangles(const ClothComplex& lcc, Dart_const_handle d) {
-  return lcc.darts_of_orbit<1>(d).size() == 3 &&
-         (lcc.is_free<2>(d) || lcc.darts_of_orbit<1>(lcc.opposite<2>(d)).size() == 3);
-}
-
 /// Whether splitting the edge of `dart` at its rest midpoint m makes no edge (m, apex) shorter
 /// than the shortest edge allowed and no triangle of quality under `min_quality`: a split of a
 /// long edge across a thin triangle would join m to an apex that is nearly on the edge.
@@ -212,7 +205,7 @@ std::pair<int, int> split_long_edges(ClothComplex& lcc, const RefinementOptions&
   };
   std::vector<LongEdge> long_edges;
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
-    if (edge_rest_length_m(lcc, d) < 2.0 * o.min_edge_length_m || !faces_are_triangles(lcc, d)) {
+    if (edge_rest_length_m(lcc, d) < 2.0 * o.min_edge_length_m || !edge_between_triangles(lcc, d)) {
       continue;
     }
     const double length2 =
@@ -230,7 +223,7 @@ std::pair<int, int> split_long_edges(ClothComplex& lcc, const RefinementOptions&
     // an earlier split or flip took this edge away
     if (!lcc.is_dart_used(edge.dart) || lcc.vertex_attribute(edge.dart) != edge.from ||
         lcc.vertex_attribute(lcc.next(edge.dart)) != edge.to ||
-        !faces_are_triangles(lcc, edge.dart)) {
+        !edge_between_triangles(lcc, edge.dart)) {
       continue;
     }
     if (!split_keeps_quality(lcc, edge.dart, o.min_edge_length_m, 0.5 / o.max_aspect_ratio)) {

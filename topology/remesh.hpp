@@ -33,9 +33,10 @@ double edge_metric_length2(const ClothComplex& lcc, Dart_const_handle dart);
 ///     < -0.1 (wedge(b - e, a - e) + wedge(a - c, b - c)),
 /// wedge(p, q) = (p x q) . n in material coordinates, n the unit normal of (a, b, c): the
 /// M-angles at c and e add up to more than pi, with a margin (ARCSim's is 0.01; 0.1 here, which
-/// flips less for the same shapes) so that no edge flips back and forth. Where M asks nothing of the edge (its trace under 1 / (9 |a - b|^2), a target
-/// over three times the edge in every direction), the test is the Euclidean Delaunay one, with
-/// M = I / |a - b|^2: flat cloth keeps well-shaped triangles. False on the border.
+/// flips less for the same shapes) so that no edge flips back and forth. Where M asks nothing of
+/// the edge (its trace under 1 / (9 |a - b|^2), a target over three times the edge in every
+/// direction), the test is the Euclidean Delaunay one, with M = I / |a - b|^2: flat cloth keeps
+/// well-shaped triangles. False on the border.
 bool should_flip(const ClothComplex& lcc, Dart_const_handle dart);
 
 /// One pass over the cloth, which must be made of triangles, following the sizing metric of

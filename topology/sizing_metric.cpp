@@ -31,16 +31,22 @@ Eigen::Matrix3d relative_shape_operator(const ClothComplex& lcc, Dart_const_hand
   return shape / area_m2;
 }
 
+/// A metric clamped in a face's plane, with its larger eigenvalue there (1/m^2).
+struct ClampedMetric {
+  Eigen::Matrix3d metric_per_m2;
+  double largest_per_m2;
+};
+
 /// `metric` with its eigenvalues in the plane of the orthonormal `frame` clamped to at most
 /// `largest_per_m2` and at least the larger one over `max_aspect`^2.
-Eigen::Matrix3d clamped(const Eigen::Matrix3d& metric, const Eigen::Matrix<double, 3, 2>& frame,
-                        double largest_per_m2, double max_aspect) {
+ClampedMetric clamped(const Eigen::Matrix3d& metric, const Eigen::Matrix<double, 3, 2>& frame,
+                      double largest_per_m2, double max_aspect) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> in_plane(frame.transpose() * metric * frame);
   Eigen::Vector2d lambda = in_plane.eigenvalues().cwiseMax(0.0);  // ascending
   lambda[1] = std::min(lambda[1], largest_per_m2);
   lambda[0] = std::clamp(lambda[0], lambda[1] / (max_aspect * max_aspect), lambda[1]);
   const Eigen::Matrix<double, 3, 2> axes = frame * in_plane.eigenvectors();
-  return axes * lambda.asDiagonal() * axes.transpose();
+  return {axes * lambda.asDiagonal() * axes.transpose(), lambda[1]};
 }
 
 }  // namespace
@@ -100,7 +106,7 @@ void compute_sizing_metric(ClothComplex& lcc, const RefinementOptions& o,
     double largest_strain = 0.0;
     for (auto e = lcc.darts_of_orbit<1>(d).begin(); e != lcc.darts_of_orbit<1>(d).end(); ++e) {
       longest_m = std::max(longest_m, edge_rest_length_m(lcc, e));
-      largest_strain = std::max(largest_strain, std::abs(edge_strain(lcc, e)));
+      largest_strain = std::max(largest_strain, edge_strain(lcc, e));
     }
     if (o.strain_threshold > 0.0) {
       const double over = largest_strain / (o.strain_threshold * longest_m);
@@ -113,10 +119,9 @@ void compute_sizing_metric(ClothComplex& lcc, const RefinementOptions& o,
       metric += near;
     }
     const double largest_per_m2 = 1.0 / (o.min_edge_length_m * o.min_edge_length_m);
-    face.sizing_metric_per_m2 = clamped(metric, frame, largest_per_m2, o.max_aspect_ratio);
-    face.sizing_per_m2 = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(
-                             frame.transpose() * face.sizing_metric_per_m2 * frame)
-                             .eigenvalues()[1];
+    const ClampedMetric wanted = clamped(metric, frame, largest_per_m2, o.max_aspect_ratio);
+    face.sizing_metric_per_m2 = wanted.metric_per_m2;
+    face.sizing_per_m2 = wanted.largest_per_m2;
     bool under_half = true;  // along every edge: collapsing at the default hysteresis may remove it
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d e = rest[(k + 1) % 3] - rest[k];

@@ -10,17 +10,9 @@
 #include "topology/validity.hpp"
 
 namespace tissu {
-namespace {
-
-bool face_is_triangle(const ClothComplex& lcc, Dart_const_handle d) {
-  return lcc.darts_of_orbit<1>(d).size() == 3;
-}
-
-}  // namespace
-
 Dart_handle split_edge(ClothComplex& lcc, Dart_handle dart, const SpringSettings& settings) {
   const bool interior = !lcc.is_free<2>(dart);
-  if (!face_is_triangle(lcc, dart) || (interior && !face_is_triangle(lcc, lcc.opposite<2>(dart)))) {
+  if (!edge_between_triangles(lcc, dart)) {
     throw std::invalid_argument("split_edge: refinement needs triangles on both sides of the edge");
   }
   const Vertex_handle a = lcc.vertex_attribute(dart);
