@@ -1,11 +1,13 @@
 // Bending at every level of refinement (topology/spring_assignment.cpp, bending_level_factor): a
 // sheet refined in one half is the same cloth as the uniform fine sheet, so both drape over a
 // cylinder to the same shape; with the same spring stiffness at both levels (tissu before the
-// rule) the coarse half is 16 times too stiff and hangs differently.
+// rule) the coarse half is 16 times too stiff and hangs differently. A sheet remeshed
+// anisotropically into thin cells drapes like the uniform fine sheet too.
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "lib/cloth_setup.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -14,6 +16,7 @@
 #include "topology/compile.hpp"
 #include "topology/current_mesh.hpp"
 #include "topology/refine.hpp"
+#include "topology/remesh.hpp"
 #include "topology/spring_assignment.hpp"
 
 namespace tissu {
@@ -44,6 +47,17 @@ constexpr double fine_bending_n_per_m = 200.0;
 
 enum class Rule { scaled, unscaled };
 
+/// `lcc`, built from `scenario`, stepped for the scenario's frames; its shape then.
+MaterialSurface drape(const Scenario& scenario, ClothComplex& lcc) {
+  CompiledCloth cloth = compile(lcc);
+  StepWorkspace workspace;
+  for (int k = 0; k < scenario.frames * scenario.substeps; ++k) {
+    EXPECT_NE(step(cloth.model, scenario.solver, cloth.state, workspace), StepStatus::non_finite);
+  }
+  write_back(cloth, cloth.state, lcc);
+  return {current_mesh(lcc), rest_positions(lcc)};
+}
+
 /// The sheet on 5 cm cells with its right half (rest x > 0) bisected twice into 2.5 cm cells,
 /// draped for 1.5 s. Rule::scaled: the scenario gives the 5 cm cells 1/16 of the fine cells'
 /// bending stiffness, and each bisection quadruples it. Rule::unscaled, as tissu did before the
@@ -72,13 +86,7 @@ MaterialSurface half_refined_drape(Rule rule) {
     }
     assign_springs(lcc, scenario.springs);
   }
-  CompiledCloth cloth = compile(lcc);
-  StepWorkspace workspace;
-  for (int k = 0; k < scenario.frames * scenario.substeps; ++k) {
-    EXPECT_NE(step(cloth.model, scenario.solver, cloth.state, workspace), StepStatus::non_finite);
-  }
-  write_back(cloth, cloth.state, lcc);
-  return {current_mesh(lcc), rest_positions(lcc)};
+  return drape(scenario, lcc);
 }
 
 MaterialSurface uniform_fine_drape() {
@@ -86,13 +94,40 @@ MaterialSurface uniform_fine_drape() {
       parse_scenario(sheet_over_cylinder(24, fine_bending_n_per_m), "uniform_fine.json");
   ClothComplex lcc;
   build_scenario_cloth(scenario, lcc);
-  CompiledCloth cloth = compile(lcc);
-  StepWorkspace workspace;
-  for (int k = 0; k < scenario.frames * scenario.substeps; ++k) {
-    step(cloth.model, scenario.solver, cloth.state, workspace);
+  return drape(scenario, lcc);
+}
+
+/// The sheet on 10 cm cells, remeshed anisotropically (topology/remesh.hpp) as if wrapped round
+/// the cylinder (each point's rest x becomes an arc of the cylinder), into cells 2.5 cm across the
+/// fold and up to 10 cm along it, then laid flat again and draped for 1.5 s. The scenario gives
+/// the 10 cm cells 1/256 of the fine cells' bending stiffness (four bisections); refined hinges
+/// scale by their area and shape, as with adaptive.anisotropic.
+MaterialSurface remeshed_drape(int& particles) {
+  Scenario scenario =
+      parse_scenario(sheet_over_cylinder(6, fine_bending_n_per_m / 256.0), "remeshed.json");
+  scenario.springs.bending_follows_hinge_shape = true;
+  ClothComplex lcc;
+  build_scenario_cloth(scenario, lcc);
+  const double radius_m = 0.106, axis_z_m = 0.2;
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    const Point3& r = v->info().rest_position;
+    const double angle_rad = r.x() / radius_m;
+    v->point() =
+        Point3(radius_m * std::sin(angle_rad), r.y(), axis_z_m + radius_m * std::cos(angle_rad));
   }
-  write_back(cloth, cloth.state, lcc);
-  return {current_mesh(lcc), rest_positions(lcc)};
+  RefinementOptions options;
+  options.anisotropic = true;
+  options.curvature_threshold_rad = 0.025 / radius_m;  // 2.5 cm edges across the fold
+  options.min_edge_length_m = 0.02;
+  for (int pass = 0; pass < 20; ++pass) {
+    const RemeshReport r = remesh(lcc, options, 0.0, scenario.springs);
+    if (r.splits + r.flips == 0) break;
+  }
+  for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {
+    v->point() = v->info().rest_position;
+  }
+  particles = static_cast<int>(lcc.vertex_attributes().size());
+  return drape(scenario, lcc);
 }
 
 TEST(BendingLevels, ASheetRefinedInOneHalfDrapesOverACylinderLikeTheUniformFineSheet) {
@@ -106,6 +141,30 @@ TEST(BendingLevels, ASheetRefinedInOneHalfDrapesOverACylinderLikeTheUniformFineS
   EXPECT_LT(lowest_z, 0.25);
   EXPECT_LT(scaled.mean_m, 0.01 * size_m) << "with the scaling rule";
   EXPECT_GT(unscaled.mean_m, 2.0 * scaled.mean_m) << "without it, " << unscaled.mean_m << " m";
+}
+
+// The cloth of thin remeshed cells (membrane, masses and bending together) drapes as the fine
+// one does. This does not tell the bending rules apart: at this stiffness a sheet without
+// bending ends within 0.2 % of the fine one too (docs/benchmarks.md, "the bending rule, tried
+// against shapes").
+TEST(BendingLevels, ASheetRemeshedIntoThinCellsDrapesOverACylinderLikeTheUniformFineSheet) {
+  const MaterialSurface fine = uniform_fine_drape();
+  int particles = 0;
+  const MaterialSurface remeshed = remeshed_drape(particles);
+  EXPECT_LT(particles, static_cast<int>(fine.current.vertices.size()) / 2);
+  // thin cells: a right isosceles triangle has longest edge^2 / area = 4, a right triangle of
+  // legs 2.5 and 10 cm 8.5 (the thinnest here reach about 24)
+  double thinnest = 0.0;
+  for (const std::vector<int>& f : remeshed.current.faces) {
+    const Eigen::Vector3d a = remeshed.rest_m[f[0]], b = remeshed.rest_m[f[1]],
+                          c = remeshed.rest_m[f[2]];
+    const double longest2 =
+        std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    thinnest = std::max(thinnest, longest2 / (0.5 * (b - a).cross(c - a).norm()));
+  }
+  EXPECT_GT(thinnest, 6.0);
+  const double size_m = std::hypot(0.6, 0.4);
+  EXPECT_LT(material_point_distance(remeshed, fine).mean_m, 0.01 * size_m);
 }
 
 }  // namespace
