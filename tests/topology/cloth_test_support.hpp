@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "topology/apply_pins.hpp"
 #include "topology/build_cloth_complex.hpp"
 #include "topology/eigen_conversions.hpp"
 #include "topology/grid_mesh.hpp"
@@ -50,6 +51,16 @@ inline GridOptions grid(int cells_u, int cells_v, GridCells cells,
   o.diagonal = diagonal;
   o.origin = Eigen::Vector3d(0.2, -0.1, 0.3);
   return o;
+}
+
+/// Builds the grid cloth of `options` into `lcc` at `density_kg_per_m2` with `springs`, and pins
+/// its top side; returns how many particles are pinned.
+inline int build_grid_pinned_at_top(const GridOptions& options, double density_kg_per_m2,
+                                    const SpringSettings& springs, ClothComplex& lcc) {
+  build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
+  PinSelector top;
+  top.side = Side::top;
+  return apply_pins(lcc, {top}, ClothFrame{});
 }
 
 /// A hexagonal fan of six triangles around a centre vertex, plus a quad on one side.

@@ -6,7 +6,6 @@
 #include <random>
 
 #include "cloth_test_support.hpp"
-#include "topology/apply_pins.hpp"
 #include "topology/mass_lumping.hpp"
 #include "topology/refine.hpp"
 #include "topology/validity.hpp"
@@ -20,10 +19,7 @@ class CoarsenTest : public ::testing::Test {
  protected:
   void SetUp() override {
     options = test::grid(8, 6, GridCells::triangles);
-    build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
-    PinSelector top;
-    top.side = Side::top;
-    apply_pins(lcc, {top}, ClothFrame{});
+    test::build_grid_pinned_at_top(options, density_kg_per_m2, springs, lcc);
     original_masses = masses_by_source();
   }
   std::map<int, double> masses_by_source() {

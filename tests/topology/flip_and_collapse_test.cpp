@@ -4,7 +4,6 @@
 #include <set>
 
 #include "cloth_test_support.hpp"
-#include "topology/apply_pins.hpp"
 #include "topology/collapse_vertex.hpp"
 #include "topology/complex_navigation.hpp"
 #include "topology/flip_edge.hpp"
@@ -35,10 +34,7 @@ class FlipAndCollapseTest : public ::testing::Test {
  protected:
   void SetUp() override {
     options = test::grid(6, 5, GridCells::triangles);
-    build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
-    PinSelector top;
-    top.side = Side::top;
-    apply_pins(lcc, {top}, ClothFrame{});
+    test::build_grid_pinned_at_top(options, density_kg_per_m2, springs, lcc);
   }
   double expected_mass_kg() const { return density_kg_per_m2 * options.width * options.height; }
   void expect_invariants(const std::string& when) {

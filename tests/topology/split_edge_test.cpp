@@ -8,7 +8,6 @@
 
 #include "cloth_test_support.hpp"
 #include "solver/forces/accumulate_forces.hpp"
-#include "topology/apply_pins.hpp"
 #include "topology/compile.hpp"
 #include "topology/edge_measures.hpp"
 #include "topology/validity.hpp"
@@ -22,10 +21,7 @@ class SplitEdgeTest : public ::testing::Test {
  protected:
   void SetUp() override {
     options = test::grid(6, 5, GridCells::triangles);
-    build_cloth_complex(make_grid_mesh(options), density_kg_per_m2, springs, lcc);
-    PinSelector top;
-    top.side = Side::top;
-    pinned = apply_pins(lcc, {top}, ClothFrame{});
+    pinned = test::build_grid_pinned_at_top(options, density_kg_per_m2, springs, lcc);
   }
 
   double expected_mass_kg() const { return density_kg_per_m2 * options.width * options.height; }
