@@ -44,7 +44,8 @@ std::vector<StatsColumn> stats_columns(const FrameStats& r) {
           {"max_stretch", r.max_stretch},
           {"solver_iterations", double(r.solver_iterations)},
           {"strain_limited", double(r.strain_limited)},
-          {"threads", double(r.threads)}};
+          {"threads", double(r.threads)},
+          {"flips", double(r.flips)}};
 }
 
 StatsCsv::StatsCsv(const std::filesystem::path& file) : m_file(file, "statistics") {

@@ -48,6 +48,7 @@ struct FrameStats {
   /// OpenMP threads the frame's steps ran on (0 for frame 0, which has none): what the program's
   /// thread choice gave the frame (apps: lib/thread_count.hpp)
   int threads = 0;
+  int flips = 0;  ///< edges flipped by anisotropic remeshing after this frame
 };
 
 /// A column of stats.csv and its value in a row (integers exactly, as doubles).

@@ -338,6 +338,7 @@ RunResult run_scenario(const Scenario& scenario, const RunOptions& options) {
     FrameStats row = measure(cloth, lcc, scenario.solver.environment, frame, frame_count, steps);
     row.splits = changes.splits + steps.tip_splits;
     row.merges = changes.merges;
+    row.flips = changes.flips;
     // what the viewer and the renderer show of the frame, taken once for both
     const bool rendered = render.enabled && frame % render.every == 0;
     std::optional<RenderFrame> shown;

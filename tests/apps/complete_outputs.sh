@@ -6,9 +6,9 @@ check_complete_outputs() {
   if [ -n "$(find "$dir" -maxdepth 1 -name '.*' -type f)" ]; then
     echo "temporary files left: $(find "$dir" -maxdepth 1 -name '.*' -type f)"; bad=1
   fi
-  # stats.csv: a header and whole rows of as many fields (lib/frame_stats.cpp: 24), ending with a
+  # stats.csv: a header and whole rows of as many fields (lib/frame_stats.cpp: 25), ending with a
   # newline
-  local fields=24
+  local fields=25
   if [ -e "$dir/stats.csv" ]; then
     if [ -s "$dir/stats.csv" ] && [ "$(tail -c 1 "$dir/stats.csv" | od -An -c | tr -d ' ')" != '\n' ]; then
       echo "stats.csv does not end with a newline"; bad=1

@@ -35,6 +35,7 @@ struct Column {
   std::vector<int> particles;
   std::vector<double> max_stretch;
   int splits = 0;
+  int flips = 0;
 };
 
 Column read_stats(const std::filesystem::path& csv) {
@@ -50,6 +51,7 @@ Column read_stats(const std::filesystem::path& csv) {
     out.total_mass_kg.push_back(std::stod(cells.at(6)));
     out.max_stretch.push_back(std::stod(cells.at(20)));
     out.splits += std::stoi(cells.at(11));
+    out.flips += std::stoi(cells.at(24));
   }
   return out;
 }
@@ -68,6 +70,7 @@ TEST(AdaptiveRun, ThousandStepsOfRefinementKeepTheTotalMass) {
     EXPECT_NEAR(stats.total_mass_kg[frame], expected_kg, 1e-12 * expected_kg) << "frame " << frame;
   }
   EXPECT_GT(stats.splits, 0);
+  EXPECT_EQ(stats.flips, 0) << "bisection flips no edge";
   EXPECT_GT(stats.particles.back(), stats.particles.front());
   EXPECT_LE(stats.particles.back(), 400);
 }
@@ -109,6 +112,7 @@ TEST(AdaptiveRun, AnisotropicRemeshingKeepsTheTotalMassAndGivesParticlesBack) {
     EXPECT_NEAR(stats.total_mass_kg[frame], expected_kg, 1e-12 * expected_kg) << "frame " << frame;
   }
   EXPECT_GT(stats.splits, 0);
+  EXPECT_GT(stats.flips, 0);
   EXPECT_GT(merges, 0);  // collapses, where the folds travel on
   EXPECT_LE(*std::max_element(stats.particles.begin(), stats.particles.end()), 400);
 }

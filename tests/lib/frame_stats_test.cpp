@@ -48,7 +48,7 @@ TEST(StatsCsv, WritesAHeaderThenOneWholeRowPerFrame) {
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_THAT(lines[0], ::testing::StartsWith("frame,time,particles,"));
   const auto commas = static_cast<std::ptrdiff_t>(stats_columns(FrameStats{}).size() - 1);
-  EXPECT_EQ(commas, 23);  // 24 columns, threads the last
+  EXPECT_EQ(commas, 24);  // 25 columns, flips the last
   for (const std::string& line : lines)
     EXPECT_EQ(std::count(line.begin(), line.end(), ','), commas);
   EXPECT_THAT(lines[3], ::testing::StartsWith("2,0.0666"));
