@@ -141,9 +141,10 @@ Adaptation adapt(ClothComplex& lcc, const Scenario& scenario, double time_s) {
     return {r.splits, r.collapses, r.flips};
   }
   changes.splits = refine(lcc, adaptive.refinement, scenario.springs, inputs).splits;
-  if (adaptive.hysteresis > 0.0) {
+  if (adaptive.hysteresis > 0.0) {  // on the sizing field refine() computed
     changes.merges =
-        coarsen(lcc, adaptive.refinement, adaptive.hysteresis, scenario.springs, inputs).merges;
+        coarsen_on_current_sizing(lcc, adaptive.refinement, adaptive.hysteresis, scenario.springs)
+            .merges;
   }
   return changes;
 }

@@ -105,6 +105,11 @@ void undo(ClothComplex& lcc, const Bisection& b, const SpringSettings& settings)
 CoarseningReport coarsen(ClothComplex& lcc, const RefinementOptions& options, double hysteresis,
                          const SpringSettings& settings, const SizingInputs& inputs) {
   compute_sizing(lcc, options, inputs);
+  return coarsen_on_current_sizing(lcc, options, hysteresis, settings);
+}
+
+CoarseningReport coarsen_on_current_sizing(ClothComplex& lcc, const RefinementOptions& options,
+                                           double hysteresis, const SpringSettings& settings) {
   CoarseningReport report;
   std::vector<Vertex_handle> created;
   for (auto v = lcc.vertex_attributes().begin(); v != lcc.vertex_attributes().end(); ++v) {

@@ -85,6 +85,22 @@ TEST_F(CoarsenTest, StillStretchedCellsStayRefined) {
   EXPECT_EQ(lcc.vertex_attributes().size(), refined);
 }
 
+// adapt()'s pass: coarsening on the field refinement computed. The faces refinement split hold
+// their parent's sizing, so none of its particles is undone at once (the last of the three
+// passes split 144 edges); with a field that wants nothing (all sizing 0) the same call undoes
+// them.
+TEST_F(CoarsenTest, RightAfterRefinementTheFieldItComputedUndoesNoneOfItsSplits) {
+  refine_stretched_part();
+  const std::size_t refined = lcc.vertex_attributes().size();
+  EXPECT_EQ(coarsen_on_current_sizing(lcc, refinement, 0.5, springs).merges, 0);
+  EXPECT_EQ(lcc.vertex_attributes().size(), refined);
+  for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
+    f->info().sizing_per_m2 = 0.0;
+  }
+  EXPECT_GT(coarsen_on_current_sizing(lcc, refinement, 0.5, springs).merges, 0);
+  test::expect_valid_with_mass(lcc, expected_mass_kg());
+}
+
 TEST_F(CoarsenTest, CoarseningConservesMassAndMomentum) {
   refine_stretched_part();
   std::mt19937 random(5);
