@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -77,8 +78,21 @@ int pieces(const std::vector<std::vector<int>>& faces, std::size_t vertices) {
   return static_cast<int>(roots.size());
 }
 
+/// The edges of the faces that only one face has.
+int boundary_edges(const std::vector<std::vector<int>>& faces) {
+  std::map<std::pair<int, int>, int> faces_at_edge;
+  for (const std::vector<int>& f : faces) {
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const int a = f[k], b = f[(k + 1) % f.size()];
+      ++faces_at_edge[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  return static_cast<int>(std::count_if(faces_at_edge.begin(), faces_at_edge.end(),
+                                        [](const auto& edge) { return edge.second == 1; }));
+}
+
 /// The OBJ of every frame holds the model's particles to the last bit, its faces and its rest
-/// coordinates, and as many particles and pieces as stats.csv says.
+/// coordinates, and as many particles, pieces and boundary edges as stats.csv says.
 void expect_obj_frames_are_the_model(const Recorded& r) {
   ASSERT_EQ(r.surfaces.size(), r.stats.size());
   for (std::size_t f = 0; f < r.surfaces.size(); ++f) {
@@ -89,6 +103,7 @@ void expect_obj_frames_are_the_model(const Recorded& r) {
     EXPECT_EQ(obj.faces, model.current.faces) << "frame " << f;
     EXPECT_EQ(static_cast<int>(obj.faces.size()), r.stats[f].faces) << "frame " << f;
     EXPECT_EQ(pieces(obj.faces, obj.positions.size()), r.stats[f].pieces) << "frame " << f;
+    EXPECT_EQ(boundary_edges(obj.faces), r.stats[f].boundary_edges) << "frame " << f;
     EXPECT_EQ(obj.texture_coordinates, rest_texture_coordinates(model.rest_m, r.frame));
     EXPECT_EQ(obj.face_texture_coordinates, obj.faces) << "frame " << f;
   }
