@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs bench/integrator_bench's hanging sheets (one thread) for the methods in `methods` below
-# and plots each one's wall time per frame against the particle count, log-log, into
+# Runs bench/integrator_bench's hanging sheets (one thread) for the methods in `methods` below,
+# and the scenario default on two threads as tissu runs it on this 2-core machine, and plots each
+# one's wall time per frame against the particle count, log-log, into
 # docs/integrators.png, with Bullet's soft body on the same sheet (bench/bullet_sheet_bench) and
 # dotted lines for the methods that missed their tolerance; the benchmarks' CSV is kept next to it as docs/integrators.csv, and `--plot-only`
 # replots that CSV. Needs a Release build (scripts/build.sh) and gnuplot (scripts/setup.sh
@@ -13,20 +14,30 @@ png=docs/integrators.png
 csv=docs/integrators.csv
 points=$(mktemp)
 peer_csv=$(mktemp)
-trap 'rm -f "$points" "$peer_csv"' EXIT
+two_threads_csv=$(mktemp)
+trap 'rm -f "$points" "$peer_csv" "$two_threads_csv"' EXIT
 
 fail() { echo "plot_integrators: $*" >&2; exit 1; }
 [[ $# -eq 0 || ( $# -eq 1 && $1 == --plot-only ) ]] || fail "usage: $0 [--plot-only]"
 command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
 # the methods plotted, and benchmarked (integrator_bench's other variants are left out)
+default_method=quasi_newton_multigrid_gradient  # simulation.integrator's default, as benchmarked
 methods=(implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton
-  quasi_newton_multigrid_gradient)
+  "$default_method" "${default_method}_2_threads")
 if [[ ${1:-} != --plot-only ]]; then
   bench=$build_dir/bench/integrator_bench
   peer=$build_dir/bench/bullet_sheet_bench
   [[ -x $bench && -x $peer ]] || fail "$bench or $peer not found; build them with scripts/build.sh"
   OMP_NUM_THREADS=1 "$bench" --benchmark_filter="HangingSheet/($(IFS='|'; echo "${methods[*]}"))/" \
     --benchmark_out="$csv" --benchmark_out_format=csv
+  # the default on two threads with the tissu programs' spin count (apps/openmp_waiting.hpp),
+  # timings only, renamed so that it plots as a method of its own
+  OMP_NUM_THREADS=2 GOMP_SPINCOUNT=10000 TISSU_SHEET_REFERENCES=0 "$bench" \
+    --benchmark_filter="HangingSheet/$default_method/" \
+    --benchmark_out="$two_threads_csv" --benchmark_out_format=csv
+  grep -E '^(name,|"BM_HangingSheet/)' "$two_threads_csv" |
+    sed "s#^\"BM_HangingSheet/$default_method/#\"BM_HangingSheet/${default_method}_2_threads/#" \
+      >>"$csv" || fail "no rows in $two_threads_csv"
   "$peer" --benchmark_out="$peer_csv" --benchmark_out_format=csv
   # with its own header: its counters are not the same columns
   grep -E '^(name,|"BulletSheet/)' "$peer_csv" >>"$csv" || fail "no Bullet rows in $peer_csv"
@@ -58,7 +69,7 @@ done
 gnuplot <<PLOT
 set terminal pngcairo size 1000,750 font ",11"
 set output "$png"
-set title "Stiff hanging sheet, one step of h = 1/30 s per frame, one thread: wall time per frame" noenhanced
+set title "Stiff hanging sheet, one step of h = 1/30 s per frame, one thread (the default also on two): wall time per frame" noenhanced
 set logscale xy
 set xlabel "particles"
 set ylabel "ms per frame"
