@@ -20,10 +20,11 @@ trap 'rm -f "$points" "$peer_csv" "$two_threads_csv"' EXIT
 fail() { echo "plot_integrators: $*" >&2; exit 1; }
 [[ $# -eq 0 || ( $# -eq 1 && $1 == --plot-only ) ]] || fail "usage: $0 [--plot-only]"
 command -v gnuplot >/dev/null || fail "gnuplot not found; install it with scripts/setup.sh"
-# the methods plotted, and benchmarked (integrator_bench's other variants are left out)
+# the methods benchmarked on one thread (integrator_bench's other variants are left out), and
+# those plotted: the same, and the default on two threads
 default_method=quasi_newton_multigrid_gradient  # simulation.integrator's default, as benchmarked
-methods=(implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton
-  "$default_method" "${default_method}_2_threads")
+methods=(implicit_euler pd_direct pd_colored_gauss_seidel newton quasi_newton "$default_method")
+plotted=("${methods[@]}" "${default_method}_2_threads")
 if [[ ${1:-} != --plot-only ]]; then
   bench=$build_dir/bench/integrator_bench
   peer=$build_dir/bench/bullet_sheet_bench
@@ -58,7 +59,7 @@ awk -F, '
 
 # one line per method; a method that missed its tolerance on some step is dotted and says so
 plot="plot"
-for method in "${methods[@]}"; do
+for method in "${plotted[@]}"; do
   unconverged=$(awk -v m="$method" '$1 == m { u += $4 } END { print u + 0 }' "$points")
   title=$method
   dash=1
