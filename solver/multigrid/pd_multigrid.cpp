@@ -157,15 +157,38 @@ AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<
   return coarse;
 }
 
-// the level's operator A, its Jacobi scale (from its own Gershgorin bound) and the float copy
-// the cycles read; returns the bound on rho(D^-1 A)
-double set_operator(PdMultigridLevel& level, RowMatrix matrix) {
-  level.matrix = std::move(matrix);
+// the level's Jacobi scale (from its own Gershgorin bound) and the float copy the cycles read, from
+// its operator A; returns the bound on rho(D^-1 A)
+double refresh_from_operator(PdMultigridLevel& level) {
   const Eigen::VectorXd diagonal = level.matrix.diagonal();
   const double radius_bound = jacobi_radius_bound(level.matrix, diagonal);
   level.jacobi_scale = jacobi_scale(diagonal, radius_bound);
-  level.cycle_matrix = level.matrix.cast<float>();
+  if (level.cycle_matrix.nonZeros() == level.matrix.nonZeros() &&
+      level.cycle_matrix.rows() == level.matrix.rows()) {  // the same pattern: values in place
+    std::transform(level.matrix.valuePtr(), level.matrix.valuePtr() + level.matrix.nonZeros(),
+                   level.cycle_matrix.valuePtr(), [](double v) { return float(v); });
+  } else {
+    level.cycle_matrix = level.matrix.cast<float>();
+  }
   return radius_bound;
+}
+
+// the level's operator A, its Jacobi scale and float copy; returns the bound on rho(D^-1 A)
+double set_operator(PdMultigridLevel& level, RowMatrix matrix) {
+  level.matrix = std::move(matrix);
+  level.cycle_matrix.resize(0, 0);  // a new pattern, maybe of the same size
+  return refresh_from_operator(level);
+}
+
+// the position of each row's diagonal entry among a compressed matrix's values (every row has one)
+std::vector<int> diagonal_positions(const RowMatrix& a) {
+  std::vector<int> positions(a.rows());
+  for (int i = 0; i < a.rows(); ++i) {
+    const int* begin = a.innerIndexPtr() + a.outerIndexPtr()[i];
+    const int* end = a.innerIndexPtr() + a.outerIndexPtr()[i + 1];
+    positions[i] = static_cast<int>(std::lower_bound(begin, end, i) - a.innerIndexPtr());
+  }
+  return positions;
 }
 
 }  // namespace
@@ -185,6 +208,7 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
     const int nodes = static_cast<int>(a.rows());
     const Eigen::VectorXd diagonal = a.diagonal();
     fine.base_matrix = a;
+    if (index == 0) m_finest_diagonal = diagonal_positions(fine.base_matrix);
     fine.solution.setZero(3, nodes);
     fine.residual.setZero(3, nodes);
     fine.right_side.setZero(3, nodes);
@@ -221,8 +245,23 @@ bool PdMultigrid::prepare(const SpringModel& model, const PdSystem& system) {
 }
 
 bool PdMultigrid::factor_coarsest() {
-  m_coarsest = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
-  m_coarsest->compute(Eigen::SparseMatrix<double>(m_levels.back().matrix));
+  const Eigen::SparseMatrix<double> coarsest(m_levels.back().matrix);
+  const bool same_pattern =
+      m_coarsest && m_coarsest_pattern.outer.size() == std::size_t(coarsest.outerSize() + 1) &&
+      std::equal(m_coarsest_pattern.outer.begin(), m_coarsest_pattern.outer.end(),
+                 coarsest.outerIndexPtr()) &&
+      m_coarsest_pattern.inner.size() == std::size_t(coarsest.nonZeros()) &&
+      std::equal(m_coarsest_pattern.inner.begin(), m_coarsest_pattern.inner.end(),
+                 coarsest.innerIndexPtr());
+  if (!same_pattern) {  // ordering and elimination tree once per pattern, not per step
+    m_coarsest = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
+    m_coarsest->analyzePattern(coarsest);
+    m_coarsest_pattern.outer.assign(coarsest.outerIndexPtr(),
+                                    coarsest.outerIndexPtr() + coarsest.outerSize() + 1);
+    m_coarsest_pattern.inner.assign(coarsest.innerIndexPtr(),
+                                    coarsest.innerIndexPtr() + coarsest.nonZeros());
+  }
+  m_coarsest->factorize(coarsest);
   return m_coarsest->info() == Eigen::Success;
 }
 
@@ -234,15 +273,18 @@ bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
     PdMultigridLevel& level = m_levels[index];
     if (!m_extra) {
       set_operator(level, level.base_matrix);
-    } else if (index == 0) {
-      RowMatrix d(extra.size(), extra.size());
-      d.setIdentity();
-      d.diagonal() = extra;
-      added = d;
-      set_operator(level, level.base_matrix + added);
+    } else if (index == 0) {  // A + D on A's pattern (level.matrix keeps base_matrix's): in place
+      double* values = level.matrix.valuePtr();
+      const double* base_values = level.base_matrix.valuePtr();
+      for (int i = 0; i < extra.size(); ++i) {
+        values[m_finest_diagonal[i]] = base_values[m_finest_diagonal[i]] + extra[i];
+      }
+      refresh_from_operator(level);
     } else {
       const PdMultigridLevel& fine = m_levels[index - 1];
-      added = RowMatrix(fine.restrictor * RowMatrix(added * fine.prolongator));
+      added = index == 1
+                  ? RowMatrix(fine.restrictor * RowMatrix(extra.asDiagonal() * fine.prolongator))
+                  : RowMatrix(fine.restrictor * RowMatrix(added * fine.prolongator));
       set_operator(level, level.base_matrix + added);
     }
   }
@@ -252,7 +294,9 @@ bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
 void PdMultigrid::cycle(int index) {
   PdMultigridLevel& level = m_levels[index];
   if (index + 1 == static_cast<int>(m_levels.size())) {
-    level.solution = m_coarsest->solve(level.right_side.transpose()).transpose();
+    m_coarsest_right_side = level.right_side.transpose();  // the factor solves columns
+    m_coarsest_solution = m_coarsest->solve(m_coarsest_right_side);
+    level.solution = m_coarsest_solution.transpose();
     return;
   }
   // each sweep writes the residual's buffer, free until the restriction, then takes it back

@@ -142,6 +142,39 @@ TEST(PdMultigrid, AnExtraDiagonalIsCycledThroughTheSameAggregatesAndTakenOffAgai
   EXPECT_EQ(after, before);
 }
 
+TEST(PdMultigrid, AnExtraDiagonalSetAgainOrOnANewSystemGivesAFreshHierarchysBits) {
+  // set_extra_diagonal() changes the finest operator in place and keeps the coarsest factor's
+  // ordering while its pattern holds: neither an earlier extra nor an earlier system leaves a trace
+  PdMultigrid reused;
+  for (int side : {41, 31}) {  // the second sheet's coarsest level has another pattern
+    State state;
+    const SpringModel model = test::stiff_sheet(side, state);
+    PdSystem system;
+    update_pd_system(model, time_step_s, system);
+    const Eigen::VectorXd r = test::random_free_vector(model, 6);
+    const auto extra_on = [&](int parity, double scale) {  // on every other free particle
+      Eigen::VectorXd extra = Eigen::VectorXd::Zero(system.free_particles.size());
+      for (int f = parity; f < extra.size(); f += 2) {
+        extra[f] = scale * model.mass[system.free_particles[f]] / (time_step_s * time_step_s);
+      }
+      return extra;
+    };
+    Eigen::VectorXd z, z_fresh;
+    ASSERT_TRUE(reused.prepare(model, system));
+    ASSERT_TRUE(reused.set_extra_diagonal(extra_on(0, 1000.0)));
+    reused.apply(model, system, r, z);
+    const Eigen::VectorXd second = extra_on(1, 10.0);
+    ASSERT_TRUE(reused.set_extra_diagonal(second));
+    reused.apply(model, system, r, z);
+
+    PdMultigrid fresh;
+    ASSERT_TRUE(fresh.prepare(model, system));
+    ASSERT_TRUE(fresh.set_extra_diagonal(second));
+    fresh.apply(model, system, r, z_fresh);
+    EXPECT_TRUE((z.array() == z_fresh.array()).all()) << side << " a side";
+  }
+}
+
 TEST(PdMultigrid, AggregatesAlongBendingSpringsWhenAParticleHasNoOther) {
   // every spring a bending spring: the aggregates grow on them, and the cycle still converges
   State state;
