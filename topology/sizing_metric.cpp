@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
+#include <utility>
 
 #include "topology/edge_measures.hpp"
 #include "topology/eigen_conversions.hpp"
@@ -12,23 +14,53 @@
 namespace tissu {
 namespace {
 
-/// The face's shape operator relative to rest (1/m), a tensor in its rest plane:
-/// 1 / (2 A) sum_e (theta_e - theta0_e) |e| t_e t_e^T over its interior edges, theta read from
-/// the positions `at` gives.
-template <class Position>
-Eigen::Matrix3d relative_shape_operator(const ClothComplex& lcc, Dart_const_handle face,
-                                        const Eigen::Vector3d& unit_normal, double area_m2,
-                                        Position at) {
+/// An interior edge's signed dihedral angle relative to rest (rad), now and at x + lookahead v.
+struct EdgeTurn {
+  double now_rad = 0.0;
+  double ahead_rad = 0.0;
+};
+
+/// The turn of every interior edge, by the address of each of its two darts: each hinge is read
+/// once, where the faces on either side of it would read it twice.
+std::unordered_map<const void*, EdgeTurn> edge_turns(const ClothComplex& lcc, double lookahead_s) {
   const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
-  Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
-  for (auto e = lcc.darts_of_orbit<1>(face).begin(); e != lcc.darts_of_orbit<1>(face).end(); ++e) {
-    if (lcc.is_free<2>(e)) continue;
+  const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
+  const auto ahead = [&](Dart_const_handle e) {
+    return Eigen::Vector3d(to_eigen(lcc.point(e)) +
+                           lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
+  };
+  std::unordered_map<const void*, EdgeTurn> turns;
+  turns.reserve(2 * lcc.attributes<1>().size());
+  for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
+    if (lcc.is_free<2>(d)) continue;
+    const double rest_rad = signed_dihedral(lcc, d, rest);  // the same seen from either dart
+    EdgeTurn turn;
+    turn.now_rad = wrapped(signed_dihedral(lcc, d, now) - rest_rad);
+    if (lookahead_s > 0.0) turn.ahead_rad = wrapped(signed_dihedral(lcc, d, ahead) - rest_rad);
+    turns[&*d] = turn;
+    turns[&*lcc.opposite<2>(d)] = turn;
+  }
+  return turns;
+}
+
+/// The face's shape operators relative to rest (1/m), now and looking ahead, tensors in its rest
+/// plane: 1 / (2 A) sum_e (theta_e - theta0_e) |e| t_e t_e^T over its interior edges.
+std::pair<Eigen::Matrix3d, Eigen::Matrix3d> relative_shape_operators(
+    const ClothComplex& lcc, Dart_const_handle face, const Eigen::Vector3d& unit_normal,
+    double area_m2, const std::unordered_map<const void*, EdgeTurn>& turns) {
+  const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
+  Eigen::Matrix3d now = Eigen::Matrix3d::Zero(), ahead = Eigen::Matrix3d::Zero();
+  Dart_const_handle e = face;
+  for (int k = 0; k < 3; ++k, e = lcc.next(e)) {
+    const auto turn = turns.find(&*e);
+    if (turn == turns.end()) continue;  // a border edge
     const Eigen::Vector3d edge = rest(lcc.next(e)) - rest(e);
     const Eigen::Vector3d across = unit_normal.cross(edge).normalized();
-    const double turn_rad = wrapped(signed_dihedral(lcc, e, at) - signed_dihedral(lcc, e, rest));
-    shape += 0.5 * turn_rad * edge.norm() * across * across.transpose();
+    const Eigen::Matrix3d weight = (0.5 * edge.norm() / area_m2) * across * across.transpose();
+    now += turn->second.now_rad * weight;
+    ahead += turn->second.ahead_rad * weight;
   }
-  return shape / area_m2;
+  return {now, ahead};
 }
 
 /// A metric clamped in a face's plane, with its larger eigenvalue there (1/m^2).
@@ -38,15 +70,24 @@ struct ClampedMetric {
 };
 
 /// `metric` with its eigenvalues in the plane of the orthonormal `frame` clamped to at most
-/// `largest_per_m2` and at least the larger one over `max_aspect`^2.
+/// `largest_per_m2` and at least the larger one over `max_aspect`^2. The 2 x 2 eigenproblem
+/// [a b; b c] in closed form: lambda = m -+ r with m = (a + c) / 2, r = sqrt(((a - c) / 2)^2 +
+/// b^2); the larger one's eigenvector is (lambda - c, b) when a >= c, else (b, lambda - a), whose
+/// leading term is then at least r.
 ClampedMetric clamped(const Eigen::Matrix3d& metric, const Eigen::Matrix<double, 3, 2>& frame,
                       double largest_per_m2, double max_aspect) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> in_plane(frame.transpose() * metric * frame);
-  Eigen::Vector2d lambda = in_plane.eigenvalues().cwiseMax(0.0);  // ascending
-  lambda[1] = std::min(lambda[1], largest_per_m2);
-  lambda[0] = std::clamp(lambda[0], lambda[1] / (max_aspect * max_aspect), lambda[1]);
-  const Eigen::Matrix<double, 3, 2> axes = frame * in_plane.eigenvectors();
-  return {axes * lambda.asDiagonal() * axes.transpose(), lambda[1]};
+  const Eigen::Matrix2d in_plane = frame.transpose() * metric * frame;
+  const double a = in_plane(0, 0), b = in_plane(0, 1), c = in_plane(1, 1);
+  const double mean = 0.5 * (a + c), radius = std::hypot(0.5 * (a - c), b);
+  Eigen::Vector2d larger_axis =
+      a >= c ? Eigen::Vector2d(mean + radius - c, b) : Eigen::Vector2d(b, mean + radius - a);
+  larger_axis = radius > 0.0 ? larger_axis.normalized() : Eigen::Vector2d::UnitX();
+  double larger = std::min(std::max(mean + radius, 0.0), largest_per_m2);
+  const double smaller =
+      std::clamp(std::max(mean - radius, 0.0), larger / (max_aspect * max_aspect), larger);
+  const Eigen::Vector3d along = frame * larger_axis;
+  const Eigen::Vector3d across = frame * Eigen::Vector2d(-larger_axis[1], larger_axis[0]);
+  return {larger * along * along.transpose() + smaller * across * across.transpose(), larger};
 }
 
 }  // namespace
@@ -62,11 +103,9 @@ void compute_sizing_metric(ClothComplex& lcc, const RefinementOptions& o,
   const NearestPlanes planes = obstacles ? nearest_planes(lcc, inputs) : NearestPlanes{};
   const double floor_per_m2 =
       o.max_edge_length_m > 0.0 ? 1.0 / (o.max_edge_length_m * o.max_edge_length_m) : 0.0;
-  const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
-  const auto ahead = [&](Dart_const_handle e) {
-    return Eigen::Vector3d(to_eigen(lcc.point(e)) +
-                           o.lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
-  };
+  const std::unordered_map<const void*, EdgeTurn> turns =
+      o.curvature_threshold_rad > 0.0 ? edge_turns(lcc, o.lookahead_s)
+                                      : std::unordered_map<const void*, EdgeTurn>{};
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     FaceRest& face = lcc.info<2>(d);
     face.sizing_metric_per_m2.setZero();
@@ -87,13 +126,11 @@ void compute_sizing_metric(ClothComplex& lcc, const RefinementOptions& o,
     Eigen::Matrix3d metric = floor_per_m2 * in_plane;
     if (o.curvature_threshold_rad > 0.0) {
       const double over = 1.0 / (o.curvature_threshold_rad * o.curvature_threshold_rad);
-      const Eigen::Matrix3d s_now =
-          relative_shape_operator(lcc, d, normal.normalized(), area_m2, now);
+      const auto [s_now, s_ahead] =
+          relative_shape_operators(lcc, d, normal.normalized(), area_m2, turns);
       Eigen::Matrix3d curvature = over * s_now * s_now;
       shares.curvature = curvature.trace();
       if (o.lookahead_s > 0.0) {
-        const Eigen::Matrix3d s_ahead =
-            relative_shape_operator(lcc, d, normal.normalized(), area_m2, ahead);
         const Eigen::Matrix3d looking_ahead = over * s_ahead * s_ahead;
         if (looking_ahead.trace() > curvature.trace()) {
           shares.velocity = looking_ahead.trace() - curvature.trace();
