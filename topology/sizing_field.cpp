@@ -70,8 +70,18 @@ void compute_sizing(ClothComplex& lcc, const RefinementOptions& o, const SizingI
   for (auto f = lcc.attributes<2>().begin(); f != lcc.attributes<2>().end(); ++f) {
     f->info().sizing_per_m2 = 0.0;
   }
-  std::unordered_map<const void*, TermShares> shares;
-  shares.reserve(lcc.attributes<2>().size());
+  // per face: the terms' shares, and its longest rest edge, measured once
+  struct FaceTerms {
+    TermShares shares;
+    double longest_m = 0.0;
+  };
+  std::unordered_map<const void*, FaceTerms> faces;
+  faces.reserve(lcc.attributes<2>().size());
+  const auto terms_of = [&](Dart_const_handle side) -> FaceTerms& {
+    const auto [entry, added] = faces.try_emplace(&*lcc.attribute<2>(side));
+    if (added) entry->second.longest_m = longest_rest_edge_m(lcc, side);
+    return entry->second;
+  };
   // curvature and strain: per face, the largest over its edges
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     const bool interior = !lcc.is_free<2>(d);
@@ -88,11 +98,11 @@ void compute_sizing(ClothComplex& lcc, const RefinementOptions& o, const SizingI
     const double strain_over =
         o.strain_threshold > 0.0 ? edge_strain(lcc, d) / o.strain_threshold : 0.0;
     auto raise = [&](Dart_handle side) {
-      const double face_m = longest_rest_edge_m(lcc, side);
-      const double strain_term = strain_over * strain_over / (face_m * face_m);
+      FaceTerms& terms = terms_of(side);
+      const double strain_term = strain_over * strain_over / (terms.longest_m * terms.longest_m);
       double& sizing = lcc.info<2>(side).sizing_per_m2;
       sizing = std::max(sizing, curvature_term + strain_term);
-      TermShares& share = shares[&*lcc.attribute<2>(side)];
+      TermShares& share = terms.shares;
       share.curvature = std::max(share.curvature, now_term);
       share.velocity = std::max(share.velocity, curvature_term - now_term);
       share.strain = std::max(share.strain, strain_term);
@@ -106,14 +116,14 @@ void compute_sizing(ClothComplex& lcc, const RefinementOptions& o, const SizingI
       o.max_edge_length_m > 0.0 ? 1.0 / (o.max_edge_length_m * o.max_edge_length_m) : 0.0;
   for (auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
     FaceRest& face = lcc.info<2>(d);
-    TermShares& share = shares[&*lcc.attribute<2>(d)];
+    FaceTerms& terms = terms_of(d);
+    TermShares& share = terms.shares;
     if (obstacles && lcc.darts_of_orbit<1>(d).size() == 3) {
       share.obstacles = obstacle_metric(lcc, d, planes).trace();
       face.sizing_per_m2 += share.obstacles;
     }
     face.sizing_per_m2 = std::max(face.sizing_per_m2, floor_per_m2);
-    face.sizing_term =
-        leading_term(share, floor_per_m2, face.sizing_per_m2, longest_rest_edge_m(lcc, d));
+    face.sizing_term = leading_term(share, floor_per_m2, face.sizing_per_m2, terms.longest_m);
   }
 }
 

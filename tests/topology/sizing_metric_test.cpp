@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "cloth_test_support.hpp"
+#include "topology/sizing_geometry.hpp"
 
 namespace tissu {
 namespace {
@@ -130,6 +131,35 @@ TEST(SizingMetric, TheObstacleTermIsNothingFlatOnAFloorAndTheIsotropicTermAsATen
     near += f->info().sizing_per_m2 > 1.0 ? 1 : 0;
   }
   EXPECT_GT(near, 0);
+}
+
+TEST(SizingGeometry, WrappedGivesWhatRemainderGivesWhereverTheAngleIs) {
+  // wrapped() takes one exact subtraction within 9 rad and falls back on remainder() beyond: the
+  // same value either way (a zero's sign aside: -2 pi gives +0, remainder() -0), the ends of each
+  // branch included
+  const double angles[] = {0.0,
+                           -0.0,
+                           1.0,
+                           pi,
+                           -pi,
+                           std::nextafter(pi, 4.0),
+                           2.0 * pi,
+                           -2.0 * pi,
+                           9.0,
+                           -9.0,
+                           std::nextafter(9.0, 0.0),
+                           3.0 * pi,
+                           -3.0 * pi,
+                           25.0,
+                           -25.0};
+  for (double angle : angles) {
+    EXPECT_EQ(wrapped(angle), std::remainder(angle, 2.0 * pi)) << angle;
+  }
+  for (int k = -3000; k <= 3000; ++k) {  // a sweep over -3 pi to 3 pi and a little beyond
+    const double angle = k * 0.00325;    // rad
+    EXPECT_EQ(wrapped(angle), std::remainder(angle, 2.0 * pi)) << angle;
+  }
+  EXPECT_TRUE(std::isnan(wrapped(std::nan(""))));
 }
 
 }  // namespace
