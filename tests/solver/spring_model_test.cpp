@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace tissu {
 namespace {
@@ -41,6 +44,34 @@ TEST(FinalizeModel, BuildsTheParticleSpringIncidence) {
     for (int e = incidence.offsets[p]; e < incidence.offsets[p + 1]; ++e) {
       EXPECT_EQ(model.springs(incidence.springs[e], incidence.first_end[e] ? 0 : 1), p);
     }
+  }
+}
+
+TEST(FinalizeModel, ListsEachEdgeOfTheTrianglesOnceInOrder) {
+  SpringModel model = square();
+  finalize_model(model);
+  Eigen::MatrixX2i expected(5, 2);
+  expected << 0, 1, 0, 2, 0, 3, 1, 2, 2, 3;
+  EXPECT_EQ(model.surface_edges, expected);
+
+  // a fan around particle 0 and a strip, listed in scrambled orders: the same sorted edges as
+  // sorting every corner pair and dropping the repeats
+  model.triangles.resize(6, 3);
+  model.triangles << 3, 0, 1, 2, 1, 0, 0, 3, 2, 1, 3, 2, 2, 3, 1, 1, 2, 0;
+  finalize_model(model);
+  std::vector<std::pair<int, int>> pairs;
+  for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = model.triangles(t, c), b = model.triangles(t, (c + 1) % 3);
+      pairs.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  ASSERT_EQ(model.surface_edges.rows(), static_cast<Eigen::Index>(pairs.size()));
+  for (std::size_t e = 0; e < pairs.size(); ++e) {
+    EXPECT_EQ(model.surface_edges(e, 0), pairs[e].first);
+    EXPECT_EQ(model.surface_edges(e, 1), pairs[e].second);
   }
 }
 
@@ -87,6 +118,11 @@ TEST(FinalizeModel, RejectsBadInput) {
   {
     SpringModel model = square();
     model.triangles(1, 2) = -1;
+    EXPECT_THROW(finalize_model(model), std::invalid_argument);
+  }
+  {
+    SpringModel model = square();
+    model.triangles(0, 1) = 4;  // past the last particle
     EXPECT_THROW(finalize_model(model), std::invalid_argument);
   }
 }
