@@ -157,27 +157,21 @@ AggregationGraph quotient_graph(const AggregationGraph& fine, const std::vector<
   return coarse;
 }
 
-// the level's Jacobi scale (from its own Gershgorin bound) and the float copy the cycles read, from
-// its operator A; returns the bound on rho(D^-1 A)
-double refresh_from_operator(PdMultigridLevel& level) {
+// the level's Jacobi scale, from its operator A's own Gershgorin bound; returns the bound on
+// rho(D^-1 A)
+double set_jacobi_scale(PdMultigridLevel& level) {
   const Eigen::VectorXd diagonal = level.matrix.diagonal();
   const double radius_bound = jacobi_radius_bound(level.matrix, diagonal);
   level.jacobi_scale = jacobi_scale(diagonal, radius_bound);
-  if (level.cycle_matrix.nonZeros() == level.matrix.nonZeros() &&
-      level.cycle_matrix.rows() == level.matrix.rows()) {  // the same pattern: values in place
-    std::transform(level.matrix.valuePtr(), level.matrix.valuePtr() + level.matrix.nonZeros(),
-                   level.cycle_matrix.valuePtr(), [](double v) { return float(v); });
-  } else {
-    level.cycle_matrix = level.matrix.cast<float>();
-  }
   return radius_bound;
 }
 
-// the level's operator A, its Jacobi scale and float copy; returns the bound on rho(D^-1 A)
+// the level's operator A, its Jacobi scale and the float copy the cycles read; returns the bound
+// on rho(D^-1 A)
 double set_operator(PdMultigridLevel& level, RowMatrix matrix) {
   level.matrix = std::move(matrix);
-  level.cycle_matrix.resize(0, 0);  // a new pattern, maybe of the same size
-  return refresh_from_operator(level);
+  level.cycle_matrix = level.matrix.cast<float>();
+  return set_jacobi_scale(level);
 }
 
 // the position of each row's diagonal entry among a compressed matrix's values (every row has one)
@@ -273,13 +267,13 @@ bool PdMultigrid::set_extra_diagonal(const Eigen::VectorXd& extra) {
     PdMultigridLevel& level = m_levels[index];
     if (!m_extra) {
       set_operator(level, level.base_matrix);
-    } else if (index == 0) {  // A + D on A's pattern (level.matrix keeps base_matrix's): in place
-      double* values = level.matrix.valuePtr();
-      const double* base_values = level.base_matrix.valuePtr();
+    } else if (index == 0) {  // A + D changes A's diagonal only: in place, in both copies
       for (int i = 0; i < extra.size(); ++i) {
-        values[m_finest_diagonal[i]] = base_values[m_finest_diagonal[i]] + extra[i];
+        const int k = m_finest_diagonal[i];
+        level.matrix.valuePtr()[k] = level.base_matrix.valuePtr()[k] + extra[i];
+        level.cycle_matrix.valuePtr()[k] = float(level.matrix.valuePtr()[k]);
       }
-      refresh_from_operator(level);
+      set_jacobi_scale(level);
     } else {
       const PdMultigridLevel& fine = m_levels[index - 1];
       added = index == 1
