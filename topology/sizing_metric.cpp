@@ -82,7 +82,7 @@ ClampedMetric clamped(const Eigen::Matrix3d& metric, const Eigen::Matrix<double,
   Eigen::Vector2d larger_axis =
       a >= c ? Eigen::Vector2d(mean + radius - c, b) : Eigen::Vector2d(b, mean + radius - a);
   larger_axis = radius > 0.0 ? larger_axis.normalized() : Eigen::Vector2d::UnitX();
-  double larger = std::min(std::max(mean + radius, 0.0), largest_per_m2);
+  const double larger = std::min(std::max(mean + radius, 0.0), largest_per_m2);
   const double smaller =
       std::clamp(std::max(mean - radius, 0.0), larger / (max_aspect * max_aspect), larger);
   const Eigen::Vector3d along = frame * larger_axis;
