@@ -55,15 +55,6 @@ void check_values(const SpringModel& model) {
            "stiffness or damping");
     }
   }
-  for (Eigen::Index t = 0; t < model.triangles.rows(); ++t) {
-    for (int c = 0; c < 3; ++c) {
-      const int p = model.triangles(t, c);
-      if (p < 0 || p >= particles) {
-        fail("triangle " + std::to_string(t) + " has corner " + std::to_string(p) +
-             ", expected a particle id in [0, " + std::to_string(particles) + ")");
-      }
-    }
-  }
   if (model.coupling_stiffness.size() != model.couplings.rows()) {
     fail("coupling_stiffness must have #C = " + std::to_string(model.couplings.rows()) +
          " entries");
