@@ -29,21 +29,11 @@ struct RelativeCurvature {
 RelativeCurvature relative_curvature(const ClothComplex& lcc, Dart_const_handle d,
                                      double lookahead_s) {
   const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
-  const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
   const double delta_m =
       (centroid(corners(lcc, d, rest)) - centroid(corners(lcc, lcc.opposite<2>(d), rest))).norm();
   if (!(delta_m > 0.0)) return {};
-  const double rest_angle = signed_dihedral(lcc, d, rest);
-  RelativeCurvature kappa;
-  kappa.now_per_m = std::abs(wrapped(signed_dihedral(lcc, d, now) - rest_angle)) / delta_m;
-  if (lookahead_s > 0.0) {
-    const auto ahead = [&](Dart_const_handle e) {
-      return Eigen::Vector3d(to_eigen(lcc.point(e)) +
-                             lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
-    };
-    kappa.ahead_per_m = std::abs(wrapped(signed_dihedral(lcc, d, ahead) - rest_angle)) / delta_m;
-  }
-  return kappa;
+  const EdgeTurn turn = edge_turn(lcc, d, lookahead_s);
+  return {std::abs(turn.now_rad) / delta_m, std::abs(turn.ahead_rad) / delta_m};
 }
 
 double longest_rest_edge_m(const ClothComplex& lcc, Dart_const_handle d) {

@@ -22,6 +22,22 @@ double wrapped(double angle) {
   return std::remainder(angle, 2.0 * pi);
 }
 
+EdgeTurn edge_turn(const ClothComplex& lcc, Dart_const_handle d, double lookahead_s) {
+  const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
+  const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
+  const double rest_rad = signed_dihedral(lcc, d, rest);
+  EdgeTurn turn;
+  turn.now_rad = wrapped(signed_dihedral(lcc, d, now) - rest_rad);
+  if (lookahead_s > 0.0) {
+    const auto ahead = [&](Dart_const_handle e) {
+      return Eigen::Vector3d(to_eigen(lcc.point(e)) +
+                             lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
+    };
+    turn.ahead_rad = wrapped(signed_dihedral(lcc, d, ahead) - rest_rad);
+  }
+  return turn;
+}
+
 namespace {
 
 NearestPlane nearest_plane(const std::vector<Obstacle>& obstacles, const Eigen::Vector3d& x,

@@ -36,6 +36,17 @@ double signed_dihedral(const ClothComplex& lcc, Dart_const_handle d, Position at
 /// `angle` wrapped into [-pi, pi] (rad).
 double wrapped(double angle);
 
+/// An interior edge's signed dihedral angle relative to rest (rad): wrapped(theta - theta0), with
+/// theta now and at x + lookahead v (ahead_rad 0 when lookahead_s is 0). The same from either of
+/// the edge's darts.
+struct EdgeTurn {
+  double now_rad = 0.0;
+  double ahead_rad = 0.0;
+};
+
+/// The turn of the interior edge of dart `d` (not free in dimension 2).
+EdgeTurn edge_turn(const ClothComplex& lcc, Dart_const_handle d, double lookahead_s);
+
 /// The tangent plane of the obstacle nearest a particle: a point on it and its unit normal, and the
 /// obstacle's thickness (m).
 struct NearestPlane {

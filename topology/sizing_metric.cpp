@@ -14,29 +14,14 @@
 namespace tissu {
 namespace {
 
-/// An interior edge's signed dihedral angle relative to rest (rad), now and at x + lookahead v.
-struct EdgeTurn {
-  double now_rad = 0.0;
-  double ahead_rad = 0.0;
-};
-
 /// The turn of every interior edge, by the address of each of its two darts: each hinge is read
 /// once, where the faces on either side of it would read it twice.
 std::unordered_map<const void*, EdgeTurn> edge_turns(const ClothComplex& lcc, double lookahead_s) {
-  const auto rest = [&](Dart_const_handle e) { return to_eigen(rest_position(lcc, e)); };
-  const auto now = [&](Dart_const_handle e) { return to_eigen(lcc.point(e)); };
-  const auto ahead = [&](Dart_const_handle e) {
-    return Eigen::Vector3d(to_eigen(lcc.point(e)) +
-                           lookahead_s * to_eigen(lcc.vertex_attribute(e)->info().velocity));
-  };
   std::unordered_map<const void*, EdgeTurn> turns;
   turns.reserve(2 * lcc.attributes<1>().size());
   for (auto d = lcc.one_dart_per_cell<1>().begin(); d != lcc.one_dart_per_cell<1>().end(); ++d) {
     if (lcc.is_free<2>(d)) continue;
-    const double rest_rad = signed_dihedral(lcc, d, rest);  // the same seen from either dart
-    EdgeTurn turn;
-    turn.now_rad = wrapped(signed_dihedral(lcc, d, now) - rest_rad);
-    if (lookahead_s > 0.0) turn.ahead_rad = wrapped(signed_dihedral(lcc, d, ahead) - rest_rad);
+    const EdgeTurn turn = edge_turn(lcc, d, lookahead_s);
     turns[&*d] = turn;
     turns[&*lcc.opposite<2>(d)] = turn;
   }
